@@ -1,0 +1,39 @@
+// Subcommand registry: every cli/cmd_*.cpp registers itself with a static Registrar, so
+// adding a subcommand never touches main.cpp.
+#pragma once
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "msmesh/progress.h"
+
+namespace msmesh::cli {
+
+struct CommandSpec {
+  std::string name;
+  int order;  ///< position in --help
+  std::function<void(CLI::App&)> setup;  ///< adds the subcommand and its callback
+};
+
+std::vector<CommandSpec>& command_registry();
+
+struct Registrar {
+  Registrar(std::string name, int order, std::function<void(CLI::App&)> setup) {
+    command_registry().push_back({std::move(name), order, std::move(setup)});
+  }
+};
+
+/// A progress callback that draws a bar on stderr when it is a terminal, and does nothing
+/// otherwise (or when quiet).
+ProgressCallback make_progress_bar(bool quiet);
+/// Ends the current progress line, if one was drawn.
+void finish_progress_line();
+
+/// Refuses to write over `output` when it is the same file as `input` unless allowed.
+void check_not_overwriting_input(const std::string& input, const std::string& output, bool allowed);
+
+/// Formats a double compactly for summaries.
+std::string fmt(double x, int precision = 4);
+
+}  // namespace msmesh::cli

@@ -1,0 +1,36 @@
+// msmesh: command-line front end. Every subcommand lives in its own cmd_*.cpp.
+#include <algorithm>
+#include <iostream>
+
+#include "command.h"
+#include "msmesh/errors.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "msmesh: feature-preserving mesh processing with a Mumford-Shah model on face normals\n"
+      "(denoising, inpainting, segmentation; Liu et al. 2022, NMSTV)."};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "msmesh 0.1.0");
+  auto& registry = msmesh::cli::command_registry();
+  std::sort(registry.begin(), registry.end(), [](const auto& a, const auto& b) { return a.order < b.order; });
+  for (const auto& spec : registry) spec.setup(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    msmesh::cli::finish_progress_line();
+    return app.exit(e);
+  } catch (const msmesh::Error& e) {
+    msmesh::cli::finish_progress_line();
+    std::cerr << "msmesh: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    msmesh::cli::finish_progress_line();
+    std::cerr << "msmesh: error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    msmesh::cli::finish_progress_line();
+    std::cerr << "msmesh: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,41 @@
+// Reading and writing meshes (library msmesh_io, on top of the core). Formats: OBJ, OFF,
+// PLY (ascii and binary), STL (ascii and binary), chosen by the file extension
+// (case-insensitive). Readers are CGAL's; polygons are triangulated on read, STL triangle
+// soups are welded into shared vertices. Every failure throws msmesh::IoError naming the file.
+#pragma once
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "msmesh/mesh.h"
+
+namespace msmesh {
+
+/// Lower-case format name of a path ("obj", "off", "ply", "stl"); throws IoError for others.
+std::string mesh_format_from_path(const std::string& path);
+
+/// Reads a mesh. Throws IoError when the file is missing, of unknown format, truncated or
+/// malformed, has non-finite coordinates or out-of-range indices. Faces that repeat a vertex
+/// are dropped (`dropped_degenerate` counts them, when given).
+Mesh read_mesh(const std::string& path, Eigen::Index* dropped_degenerate = nullptr);
+
+struct WriteOptions {
+  bool binary = true;  ///< PLY and STL: binary (true) or ascii; OBJ and OFF are always text
+};
+
+/// Writes a mesh; the format follows the extension. The file is written to a temporary file
+/// in the same folder and renamed into place, so it appears completely or not at all.
+void write_mesh(const std::string& path, const Mesh& mesh, const WriteOptions& options = {});
+
+/// Writes a PLY (binary unless !binary) with one RGB colour (components in [0,1]) per face.
+void write_ply_face_colors(const std::string& path, const Mesh& mesh, const Eigen::MatrixXd& face_colors,
+                           bool binary = true);
+
+/// Writes polylines: OBJ (`v` and `l` records) or PLY (vertices and `edge` elements),
+/// by extension. Each polyline is a list of row indices into P (#P by 3).
+void write_polylines(const std::string& path, const Eigen::MatrixXd& P, const std::vector<std::vector<int>>& lines);
+
+/// Writes `text` to `path` atomically (temporary file, then rename).
+void write_text_file(const std::string& path, const std::string& text);
+
+}  // namespace msmesh

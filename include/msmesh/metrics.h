@@ -1,0 +1,56 @@
+// Error metrics of the denoising literature (DESIGN.md §"Measuring results").
+#pragma once
+#include <Eigen/Core>
+#include <memory>
+
+namespace msmesh {
+
+/// Face-normal errors of a result against a ground truth with the same connectivity.
+struct NormalErrors {
+  double msae = 0;            ///< mean over faces of θ² (radians²); the paper prints msae × 1e3
+  double mean_angle_deg = 0;  ///< mean over faces of θ in degrees
+  Eigen::Index flipped = 0;   ///< faces with θ > 90°
+  Eigen::VectorXd angle_rad;  ///< #F per-face θ
+};
+
+/// Throws InvalidInput when F and F_truth differ (normal metrics need equal connectivity).
+NormalErrors normal_errors(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& V_truth,
+                           const Eigen::MatrixXi& F_truth);
+
+/// Point-to-surface distances (true point-to-triangle distance through an AABB tree).
+class SurfaceDistance {
+ public:
+  SurfaceDistance(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F);
+  ~SurfaceDistance();
+  SurfaceDistance(SurfaceDistance&&) noexcept;
+  SurfaceDistance& operator=(SurfaceDistance&&) noexcept;
+  /// #P distances from the rows of P (#P by 3) to the surface.
+  Eigen::VectorXd distances(const Eigen::MatrixXd& P) const;
+  /// #P by 3 closest points on the surface.
+  Eigen::MatrixXd closest_points(const Eigen::MatrixXd& P) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Vertex-to-truth-surface distances, relative to the truth's bounding-box diagonal.
+struct DistanceErrors {
+  double mean = 0, rms = 0, max = 0;
+  double area_weighted_rms = 0;  ///< RMS weighted by the result's vertex areas (Sun et al. 2007 E_v)
+};
+
+DistanceErrors vertex_distance_errors(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                                      const Eigen::MatrixXd& V_truth, const Eigen::MatrixXi& F_truth);
+
+/// Everything `msmesh eval` reports. Normal errors only when connectivity matches.
+struct Evaluation {
+  bool same_connectivity = false;
+  NormalErrors normals;
+  DistanceErrors distances;
+};
+
+Evaluation evaluate(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& V_truth,
+                    const Eigen::MatrixXi& F_truth);
+
+}  // namespace msmesh

@@ -1,0 +1,203 @@
+#include "msmesh/topology.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <unordered_map>
+
+namespace msmesh {
+
+Topology build_topology(const Eigen::MatrixXi& F, Eigen::Index num_vertices) {
+  Topology t;
+  t.num_vertices = num_vertices;
+  const Eigen::Index nf = F.rows();
+  // Half-edges (f, k): from F(f,k+1) to F(f,k+2), keyed by (min, max); sorting groups them.
+  struct HalfEdge {
+    int lo, hi, face, corner;
+  };
+  std::vector<HalfEdge> he(static_cast<size_t>(3 * nf));
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const int a = F(f, (k + 1) % 3), b = F(f, (k + 2) % 3);
+      he[3 * f + k] = {std::min(a, b), std::max(a, b), static_cast<int>(f), k};
+    }
+  }
+  std::sort(he.begin(), he.end(), [](const HalfEdge& x, const HalfEdge& y) {
+    if (x.lo != y.lo) return x.lo < y.lo;
+    if (x.hi != y.hi) return x.hi < y.hi;
+    if (x.face != y.face) return x.face < y.face;
+    return x.corner < y.corner;
+  });
+  Eigen::Index ne = 0;
+  for (size_t i = 0; i < he.size(); ++i)
+    if (i == 0 || he[i].lo != he[i - 1].lo || he[i].hi != he[i - 1].hi) ++ne;
+
+  t.edges.resize(ne, 2);
+  t.edge_faces.setConstant(ne, 2, -1);
+  t.edge_face_count.setZero(ne);
+  t.edge_is_interior.assign(static_cast<size_t>(ne), false);
+  t.face_edges.resize(nf, 3);
+  t.face_edge_signs.resize(nf, 3);
+
+  Eigen::Index e = -1;
+  for (size_t i = 0; i < he.size(); ++i) {
+    if (i == 0 || he[i].lo != he[i - 1].lo || he[i].hi != he[i - 1].hi) {
+      ++e;
+      t.edges(e, 0) = he[i].lo;
+      t.edges(e, 1) = he[i].hi;
+    }
+    const int f = he[i].face, k = he[i].corner;
+    const int from = F(f, (k + 1) % 3);
+    const int sign = (from == he[i].lo) ? 1 : -1;
+    t.face_edges(f, k) = static_cast<int>(e);
+    t.face_edge_signs(f, k) = sign;
+    const int c = t.edge_face_count(e)++;
+    if (c < 2) t.edge_faces(e, c) = f;
+  }
+  for (Eigen::Index ei = 0; ei < ne; ++ei) {
+    if (t.edge_face_count(ei) != 2) continue;
+    const int f0 = t.edge_faces(ei, 0), f1 = t.edge_faces(ei, 1);
+    auto sign_in = [&](int f) {
+      for (int k = 0; k < 3; ++k)
+        if (t.face_edges(f, k) == ei) return t.face_edge_signs(f, k);
+      return 0;
+    };
+    const int s0 = sign_in(f0), s1 = sign_in(f1);
+    if (s0 != s1) {
+      t.edge_is_interior[ei] = true;
+      if (s0 < 0) std::swap(t.edge_faces(ei, 0), t.edge_faces(ei, 1));
+    }
+  }
+  return t;
+}
+
+namespace {
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(int a, int b) { parent[find(a)] = find(b); }
+};
+
+}  // namespace
+
+Eigen::VectorXi face_components(const Topology& topo, int* count) {
+  const Eigen::Index nf = topo.num_faces();
+  UnionFind uf(static_cast<size_t>(nf));
+  // Faces sharing any edge (also non-manifold ones) belong together; collect all faces per edge.
+  std::vector<int> first(static_cast<size_t>(topo.num_edges()), -1);
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const int e = topo.face_edges(f, k);
+      if (first[e] < 0)
+        first[e] = static_cast<int>(f);
+      else
+        uf.unite(static_cast<int>(f), first[e]);
+    }
+  }
+  Eigen::VectorXi label(nf);
+  std::unordered_map<int, int> ids;
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    const int r = uf.find(static_cast<int>(f));
+    auto it = ids.emplace(r, static_cast<int>(ids.size())).first;
+    label(f) = it->second;
+  }
+  if (count) *count = static_cast<int>(ids.size());
+  return label;
+}
+
+TopologySummary summarize_topology(const Eigen::MatrixXi& F, const Topology& topo) {
+  TopologySummary s;
+  const Eigen::Index nv = topo.num_vertices, ne = topo.num_edges(), nf = topo.num_faces();
+  std::vector<int> boundary_degree(static_cast<size_t>(nv), 0);
+  std::vector<bool> vertex_on_nm_edge(static_cast<size_t>(nv), false);
+  for (Eigen::Index e = 0; e < ne; ++e) {
+    const int c = topo.edge_face_count(e);
+    if (c == 1) {
+      ++s.boundary_edges;
+      ++boundary_degree[topo.edges(e, 0)];
+      ++boundary_degree[topo.edges(e, 1)];
+    } else if (c > 2) {
+      ++s.non_manifold_edges;
+      vertex_on_nm_edge[topo.edges(e, 0)] = vertex_on_nm_edge[topo.edges(e, 1)] = true;
+    } else if (!topo.edge_is_interior[e]) {
+      ++s.inconsistently_oriented_edges;
+    }
+  }
+  // Non-manifold vertices: the faces around a vertex, linked through shared manifold edges at
+  // that vertex, must form one fan.
+  std::vector<int> valence(static_cast<size_t>(nv), 0);
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) ++valence[F(f, k)];
+  for (Eigen::Index v = 0; v < nv; ++v)
+    if (valence[v] == 0) ++s.unreferenced_vertices;
+  {
+    // Count fans per vertex with a union-find over (vertex, face) corners.
+    std::vector<int> corner_start(static_cast<size_t>(nv) + 1, 0);
+    for (Eigen::Index v = 0; v < nv; ++v) corner_start[v + 1] = corner_start[v] + valence[v];
+    std::vector<int> fill(corner_start.begin(), corner_start.end() - 1);
+    std::vector<int> corner_face(static_cast<size_t>(3 * nf));
+    for (Eigen::Index f = 0; f < nf; ++f)
+      for (int k = 0; k < 3; ++k) corner_face[fill[F(f, k)]++] = static_cast<int>(f);
+    UnionFind uf(corner_face.size());
+    auto corner_of = [&](int v, int f) {
+      for (int i = corner_start[v]; i < corner_start[v + 1]; ++i)
+        if (corner_face[i] == f) return i;
+      return -1;
+    };
+    for (Eigen::Index e = 0; e < ne; ++e) {
+      if (topo.edge_face_count(e) != 2) continue;
+      const int f0 = topo.edge_faces(e, 0), f1 = topo.edge_faces(e, 1);
+      for (int end = 0; end < 2; ++end) {
+        const int v = topo.edges(e, end);
+        uf.unite(corner_of(v, f0), corner_of(v, f1));
+      }
+    }
+    for (Eigen::Index v = 0; v < nv; ++v) {
+      int fans = 0;
+      for (int i = corner_start[v]; i < corner_start[v + 1]; ++i)
+        if (uf.find(i) == i) ++fans;
+      if (fans > 1 || vertex_on_nm_edge[v] || boundary_degree[v] > 2) ++s.non_manifold_vertices;
+    }
+  }
+  int comps = 0;
+  face_components(topo, &comps);
+  s.components = comps;
+
+  // Boundary loops: follow boundary edges in the direction their face walks them reversed
+  // (the hole's boundary), only through vertices with exactly two boundary edges.
+  std::vector<int> next(static_cast<size_t>(nv), -1);
+  for (Eigen::Index e = 0; e < ne; ++e) {
+    if (topo.edge_face_count(e) != 1) continue;
+    const int f = topo.edge_faces(e, 0);
+    int k = 0;
+    while (topo.face_edges(f, k) != e) ++k;
+    const int from = F(f, (k + 1) % 3), to = F(f, (k + 2) % 3);
+    // The face walks from→to; the hole boundary loop walks to→from.
+    if (boundary_degree[to] == 2 && boundary_degree[from] == 2) next[to] = from;
+  }
+  std::vector<bool> seen(static_cast<size_t>(nv), false);
+  for (Eigen::Index v0 = 0; v0 < nv; ++v0) {
+    if (next[v0] < 0 || seen[v0]) continue;
+    std::vector<int> loop;
+    int v = static_cast<int>(v0);
+    bool closed = false;
+    while (v >= 0 && !seen[v]) {
+      seen[v] = true;
+      loop.push_back(v);
+      v = next[v];
+      if (v == v0) {
+        closed = true;
+        break;
+      }
+    }
+    if (closed && loop.size() >= 3) s.boundary_loops.push_back(std::move(loop));
+  }
+  return s;
+}
+
+}  // namespace msmesh

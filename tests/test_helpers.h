@@ -1,0 +1,62 @@
+// Small meshes built in code, shared by the tests.
+#pragma once
+#include <Eigen/Core>
+#include <filesystem>
+#include <string>
+
+#include "msmesh/mesh.h"
+
+namespace msmesh::test {
+
+/// A regular tetrahedron (closed, outward).
+inline Mesh tetrahedron() {
+  Mesh m;
+  m.V.resize(4, 3);
+  m.V << 1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1;
+  m.F.resize(4, 3);
+  m.F << 0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2;
+  return m;
+}
+
+/// An n×n grid of the unit square in the plane z = 0 (open, with boundary), with an optional
+/// height function applied.
+inline Mesh grid(int n, double bump = 0.0) {
+  Mesh m;
+  m.V.resize((n + 1) * (n + 1), 3);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = double(i) / n, y = double(j) / n;
+      m.V.row(j * (n + 1) + i) << x, y, bump * std::sin(3 * x + 1) * std::cos(2 * y);
+    }
+  m.F.resize(2 * n * n, 3);
+  int f = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      m.F.row(f++) << a, b, d;
+      m.F.row(f++) << a, d, c;
+    }
+  return m;
+}
+
+/// Three triangles sharing one edge (0,1): a non-manifold edge.
+inline Mesh fin() {
+  Mesh m;
+  m.V.resize(5, 3);
+  m.V << 0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.5, -1, 0.2, 0.5, 0, 1;
+  m.F.resize(3, 3);
+  m.F << 0, 1, 2, 1, 0, 3, 0, 1, 4;
+  return m;
+}
+
+/// Path of the public test meshes, or "" when ../shared is absent (tests then skip).
+inline std::string shared_mesh(const std::string& rel) {
+  const std::string p = std::string(MSMESH_SHARED_MESHES) + "/" + rel;
+  return std::filesystem::exists(p) ? p : std::string();
+}
+
+#define MSMESH_REQUIRE_SHARED(var, rel)                                                     \
+  const std::string var = ::msmesh::test::shared_mesh(rel);                                \
+  if (var.empty()) GTEST_SKIP() << "public test mesh " << rel << " not found (../shared absent)"
+
+}  // namespace msmesh::test
