@@ -1,0 +1,63 @@
+// Algorithm 1 of the paper: NMSTV normal filtering (IRLA + ADMM), DESIGN.md §"Algorithm 1".
+//
+// Minimises over unit face normals N and the edge discontinuity field v (eq. 15):
+//   γ Σ_e v_e² φ(‖(∇N)_e‖) len(e) + β (ε‖∇_E v‖²_W + ‖v − 1‖²_V / (4ε)) + α ‖N − N⁰‖²_U
+// with φ(t) = log(1 + ρt)/ρ (NMSTV) or φ(t) = t (MSTV, ref. [11]).
+// Lengths are measured in units of the mean edge length (the mesh is normalised inside), so
+// the parameters mean the same at any mesh scale.
+#pragma once
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "msmesh/progress.h"
+
+namespace msmesh {
+
+struct NormalFilterOptions {
+  double alpha = 2.0;     ///< α > 0, fidelity to the input normals (eq. 15)
+  double beta = 0.02;     ///< β > 0, weight of the Ambrosio–Tortorelli edge term
+  double gamma = 2.0;     ///< γ > 0, weight of the (non)convex normal-variation term
+  double epsilon = 1e-3;  ///< ε > 0, phase-field width (§5.1)
+  double rho = 0.1;       ///< ρ > 0, non-convexity of φ₂ (0.9 CAD, 0.1 organic; §5.1)
+  double penalty = 1.0;   ///< r_p > 0, ADMM penalty (§5.1)
+  double relaxation = 1.618;  ///< ν in (0, (1+√5)/2), multiplier step (§5.1)
+  int max_iterations = 30;    ///< k ≥ 1 (§5.1)
+  double tolerance = 1e-6;    ///< ε₁: stop when ‖N^{k+1} − N^k‖_U < ε₁ (§5.1)
+  bool reweight = true;       ///< IRLA weights (NMSTV); false: all w_e = 1 (MSTV)
+  double v_initial = 0.0;     ///< v⁰ (Algorithm 1 uses 0)
+  /// Throws InvalidInput naming the parameter, its value and the valid range.
+  void validate() const;
+};
+
+/// Optional spatially varying weights (for inpainting): empty vectors mean "all ones".
+struct NormalFilterWeights {
+  Eigen::VectorXd face_alpha;  ///< #F multipliers of α (fidelity per face)
+  Eigen::VectorXd edge_beta;   ///< #E multipliers of β in the ‖v − 1‖² term per edge
+};
+
+struct NormalFilterResult {
+  Eigen::MatrixXd normals;  ///< #F by 3 filtered unit face normals
+  Eigen::VectorXd v;        ///< #E edge field (≈0 on features, ≈1 elsewhere), edges of build_topology
+  int iterations = 0;
+  bool converged = false;  ///< stopped by the tolerance rather than max_iterations
+  std::vector<double> residual_history;  ///< ‖p − ∇N‖_V per iteration (mean-edge units)
+  std::vector<double> change_history;    ///< ‖N^{k+1} − N^k‖_U per iteration
+  std::vector<double> energy_history;    ///< energy (15) at (N^{k+1}, v^{k+1}) per iteration
+  std::vector<int> v_solver_iterations;  ///< CG iterations of each v-step
+};
+
+/// Filters the face normals of (V, F) (#V by 3, #F by 3). `normals0` (#F by 3) are the
+/// input normals N⁰; when empty, the face normals of V are used. Throws InvalidInput for bad
+/// options or mesh, SolverError when a factorisation fails, Cancelled when `progress`
+/// returns false.
+NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                                  const NormalFilterOptions& options = {}, const NormalFilterWeights& weights = {},
+                                  const ProgressCallback& progress = {}, const Eigen::MatrixXd& normals0 = {});
+
+/// Energy (15) of normals N (#F by 3) and edge field v (#E) for the mesh (V, F), in the
+/// same normalised units as filter_normals (for tests and reports).
+double nmstv_energy(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
+                    const Eigen::VectorXd& v, const Eigen::MatrixXd& normals0, const NormalFilterOptions& options);
+
+}  // namespace msmesh

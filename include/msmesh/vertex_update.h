@@ -1,0 +1,44 @@
+// Algorithm 2 of the paper: vertex updating (eq. 24–27), DESIGN.md §"Algorithm 2".
+//
+// Moves the vertices so that the face normals match target normals, minimising
+//   ω₁ Σ_i ‖M V_{f_i} − P_i‖² + ω₂ Σ_e v_e² ‖x_{i1} + x_{i2} − x_{i3} − x_{i4}‖² + ω₃ ‖V − V⁰‖²
+// by alternating the per-face oriented projection P (eq. 25, with the degenerate fallback
+// that prevents flips) and one linear solve with a matrix factored once (eq. 27).
+#pragma once
+#include <Eigen/Core>
+#include <vector>
+
+#include "msmesh/progress.h"
+
+namespace msmesh {
+
+struct VertexUpdateOptions {
+  double omega1 = 1.0;   ///< ω₁ > 0, normal matching (fixed to 1 in the paper)
+  double omega2 = 0.1;   ///< ω₂ ≥ 0, fairness across edges weighted by v² (paper range [0.001, 0.1])
+  double omega3 = 0.1;   ///< ω₃ > 0, closeness to the input positions (paper range [0.001, 0.1])
+  int max_iterations = 30;   ///< k ≥ 1
+  double tolerance = 1e-6;   ///< ε₂: stop when the RMS vertex move (mean-edge units) < ε₂
+  void validate() const;
+};
+
+/// Optional per-vertex multipliers of ω₃ (for inpainting: ≈0 on new vertices, large to pin).
+struct VertexUpdateWeights {
+  Eigen::VectorXd vertex_omega3;  ///< #V multipliers (empty: all ones)
+};
+
+struct VertexUpdateResult {
+  Eigen::MatrixXd V;  ///< #V by 3 new positions
+  int iterations = 0;
+  bool converged = false;
+  std::vector<double> change_history;  ///< RMS vertex move per iteration (mean-edge units)
+  Eigen::Index fallback_projections = 0;  ///< faces that used the degenerate projection (last iteration)
+};
+
+/// Updates the vertices of (V, F) towards the target unit normals N (#F by 3), with the edge
+/// field v (#E, edges of build_topology(F); empty: all ones). Invariant to scale, rotation
+/// and translation of the input (normalised inside).
+VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
+                                   const Eigen::VectorXd& v = {}, const VertexUpdateOptions& options = {},
+                                   const VertexUpdateWeights& weights = {}, const ProgressCallback& progress = {});
+
+}  // namespace msmesh

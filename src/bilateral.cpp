@@ -1,0 +1,125 @@
+// Bilateral normal filtering (Zheng et al. 2011, local iterative scheme) and the classic
+// vertex update (Sun et al. 2007): the widely used reference denoiser users compare against.
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include "msmesh/denoise.h"
+#include "msmesh/errors.h"
+#include "msmesh/geometry.h"
+#include "msmesh/mesh.h"
+#include "normalize.h"
+
+namespace msmesh {
+
+void BilateralOptions::validate() const {
+  auto fail = [](const char* name, double value, const char* range) {
+    std::ostringstream os;
+    os << "bilateral filtering: " << name << " = " << value << " is out of range; valid: " << range;
+    throw InvalidInput(os.str());
+  };
+  if (normal_iterations < 1 || normal_iterations > 10000) fail("normal_iterations", normal_iterations, "[1, 10000]");
+  if (vertex_iterations < 1 || vertex_iterations > 10000) fail("vertex_iterations", vertex_iterations, "[1, 10000]");
+  if (!(std::isfinite(sigma_r) && sigma_r > 0 && sigma_r <= 2)) fail("sigma_r", sigma_r, "(0, 2]");
+  if (!(std::isfinite(sigma_s) && sigma_s >= 0)) fail("sigma_s", sigma_s, ">= 0 (0 = automatic)");
+}
+
+namespace {
+
+// Faces sharing at least one vertex with each face (CSR), the face itself excluded.
+void face_vertex_neighbours(const Eigen::MatrixXi& F, Eigen::Index nv, std::vector<int>& start, std::vector<int>& nbr) {
+  const Eigen::Index nf = F.rows();
+  std::vector<int> vstart(static_cast<size_t>(nv) + 1, 0);
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) ++vstart[F(f, k) + 1];
+  for (Eigen::Index i = 0; i < nv; ++i) vstart[i + 1] += vstart[i];
+  std::vector<int> vfaces(vstart.back()), fill(vstart.begin(), vstart.end() - 1);
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) vfaces[fill[F(f, k)]++] = static_cast<int>(f);
+  start.assign(static_cast<size_t>(nf) + 1, 0);
+  nbr.clear();
+  std::vector<int> mark(static_cast<size_t>(nf), -1);
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    mark[f] = static_cast<int>(f);
+    for (int k = 0; k < 3; ++k) {
+      const int v = F(f, k);
+      for (int i = vstart[v]; i < vstart[v + 1]; ++i) {
+        const int g = vfaces[i];
+        if (mark[g] != f) {
+          mark[g] = static_cast<int>(f);
+          nbr.push_back(g);
+        }
+      }
+    }
+    start[f + 1] = static_cast<int>(nbr.size());
+  }
+}
+
+}  // namespace
+
+Eigen::MatrixXd bilateral_filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                                         const BilateralOptions& o, const ProgressCallback& progress) {
+  o.validate();
+  validate_mesh(V, F, "bilateral filtering");
+  const detail::Normalization norm = detail::normalization_for(V, F);
+  const Eigen::MatrixXd Vn = norm.apply(V);
+  const Eigen::Index nf = F.rows();
+  const Eigen::MatrixXd C = face_barycenters(Vn, F);
+  const Eigen::VectorXd A = face_areas(Vn, F);
+  std::vector<int> start, nbr;
+  face_vertex_neighbours(F, V.rows(), start, nbr);
+  double sigma_s = o.sigma_s;
+  if (sigma_s <= 0) {
+    double sum = 0;
+    for (Eigen::Index f = 0; f < nf; ++f)
+      for (int i = start[f]; i < start[f + 1]; ++i) sum += (C.row(f) - C.row(nbr[i])).norm();
+    sigma_s = nbr.empty() ? 1.0 : sum / double(nbr.size());
+  }
+  const double is2 = 1.0 / (2 * sigma_s * sigma_s), ir2 = 1.0 / (2 * o.sigma_r * o.sigma_r);
+  Eigen::MatrixXd N = face_normals(Vn, F), Nn(nf, 3);
+  for (int it = 0; it < o.normal_iterations; ++it) {
+#pragma omp parallel for schedule(static)
+    for (Eigen::Index f = 0; f < nf; ++f) {
+      Eigen::RowVector3d s = A(f) * N.row(f);
+      for (int i = start[f]; i < start[f + 1]; ++i) {
+        const int g = nbr[i];
+        const double ds = (C.row(f) - C.row(g)).squaredNorm();
+        const double dr = (N.row(f) - N.row(g)).squaredNorm();
+        s += A(g) * std::exp(-ds * is2 - dr * ir2) * N.row(g);
+      }
+      const double len = s.norm();
+      Nn.row(f) = len > 0 ? Eigen::RowVector3d(s / len) : Eigen::RowVector3d(N.row(f));
+    }
+    N.swap(Nn);
+    if (progress && !progress({"bilateral normals", it + 1, o.normal_iterations, std::nan("")}))
+      throw Cancelled("bilateral filtering cancelled");
+  }
+  return N;
+}
+
+Eigen::MatrixXd classic_vertex_update(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
+                                      int iterations, const ProgressCallback& progress) {
+  validate_mesh(V, F, "vertex update");
+  if (N.rows() != F.rows() || N.cols() != 3) throw InvalidInput("vertex update: target normals must be #F by 3");
+  const Eigen::Index nv = V.rows(), nf = F.rows();
+  Eigen::MatrixXd X = V;
+  Eigen::VectorXi count = Eigen::VectorXi::Zero(nv);
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) ++count(F(f, k));
+  for (int it = 0; it < iterations; ++it) {
+    const Eigen::MatrixXd C = face_barycenters(X, F);
+    Eigen::MatrixXd D = Eigen::MatrixXd::Zero(nv, 3);
+    for (Eigen::Index f = 0; f < nf; ++f)
+      for (int k = 0; k < 3; ++k) {
+        const int i = F(f, k);
+        D.row(i) += N.row(f) * N.row(f).dot(C.row(f) - X.row(i));
+      }
+    for (Eigen::Index i = 0; i < nv; ++i)
+      if (count(i) > 0) X.row(i) += D.row(i) / double(count(i));
+    if (progress && !progress({"vertex update", it + 1, iterations, std::nan("")}))
+      throw Cancelled("vertex update cancelled");
+  }
+  return X;
+}
+
+}  // namespace msmesh

@@ -1,0 +1,153 @@
+#include "msmesh/vertex_update.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <Eigen/SparseCholesky>
+#include <cmath>
+#include <sstream>
+
+#include "msmesh/errors.h"
+#include "msmesh/mesh.h"
+#include "msmesh/operators.h"
+#include "msmesh/topology.h"
+#include "normalize.h"
+
+namespace msmesh {
+
+void VertexUpdateOptions::validate() const {
+  auto fail = [](const char* name, double value, const char* range) {
+    std::ostringstream os;
+    os << "vertex update: " << name << " = " << value << " is out of range; valid: " << range;
+    throw InvalidInput(os.str());
+  };
+  if (!(std::isfinite(omega1) && omega1 > 0)) fail("omega1", omega1, "> 0");
+  if (!(std::isfinite(omega2) && omega2 >= 0)) fail("omega2", omega2, ">= 0");
+  if (!(std::isfinite(omega3) && omega3 > 0)) fail("omega3", omega3, "> 0");
+  if (max_iterations < 1 || max_iterations > 100000) fail("max_iterations", max_iterations, "[1, 100000]");
+  if (!(std::isfinite(tolerance) && tolerance >= 0)) fail("tolerance", tolerance, ">= 0");
+}
+
+namespace {
+
+using Triplet = Eigen::Triplet<double>;
+
+// The vertex opposite edge slot k of face f is F(f,k) (face_edges(f,k) is opposite corner k).
+int opposite_vertex(const Eigen::MatrixXi& F, const Topology& t, int f, Eigen::Index e) {
+  for (int k = 0; k < 3; ++k)
+    if (t.face_edges(f, k) == e) return F(f, k);
+  return -1;
+}
+
+}  // namespace
+
+VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
+                                   const Eigen::VectorXd& v_in, const VertexUpdateOptions& o,
+                                   const VertexUpdateWeights& weights, const ProgressCallback& progress) {
+  o.validate();
+  validate_mesh(V, F, "vertex update");
+  const Eigen::Index nv = V.rows(), nf = F.rows();
+  if (N.rows() != nf || N.cols() != 3) throw InvalidInput("vertex update: target normals must be #F by 3");
+  const Topology topo = build_topology(F, nv);
+  const Eigen::Index ne = topo.num_edges();
+  Eigen::VectorXd v = v_in.size() ? v_in : Eigen::VectorXd::Ones(ne);
+  if (v.size() != ne) throw InvalidInput("vertex update: edge field v must have one value per edge");
+  Eigen::VectorXd w3 = Eigen::VectorXd::Ones(nv);
+  if (weights.vertex_omega3.size()) {
+    if (weights.vertex_omega3.size() != nv) throw InvalidInput("vertex update: vertex_omega3 must have #V entries");
+    w3 = weights.vertex_omega3;
+    if ((w3.array() < 0).any() || !w3.allFinite()) throw InvalidInput("vertex update: vertex_omega3 must be finite and >= 0");
+  }
+  VertexUpdateResult res;
+  if (nf == 0) {
+    res.V = V;
+    res.converged = true;
+    return res;
+  }
+  const detail::Normalization norm = detail::normalization_for(V, F);
+  const Eigen::MatrixXd V0 = norm.apply(V);
+
+  // K (3T×P): row 3i+k gives corner k of face i minus the face's mean (the centring matrix M).
+  std::vector<Triplet> kt;
+  kt.reserve(static_cast<size_t>(9 * nf));
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j) kt.emplace_back(3 * f + k, F(f, j), (j == k ? 2.0 : -1.0) / 3.0);
+  SparseMatrix K(3 * nf, nv);
+  K.setFromTriplets(kt.begin(), kt.end());
+  // H: row per interior edge e = (i1,i2) with opposite vertices i3, i4: v_e (x1 + x2 − x3 − x4).
+  std::vector<Triplet> ht;
+  Eigen::Index hrows = 0;
+  for (Eigen::Index e = 0; e < ne; ++e) {
+    if (!topo.edge_is_interior[e]) continue;
+    const int i3 = opposite_vertex(F, topo, topo.edge_faces(e, 0), e);
+    const int i4 = opposite_vertex(F, topo, topo.edge_faces(e, 1), e);
+    const double ve = v(e);
+    ht.emplace_back(hrows, topo.edges(e, 0), ve);
+    ht.emplace_back(hrows, topo.edges(e, 1), ve);
+    ht.emplace_back(hrows, i3, -ve);
+    ht.emplace_back(hrows, i4, -ve);
+    ++hrows;
+  }
+  SparseMatrix H(hrows, nv);
+  H.setFromTriplets(ht.begin(), ht.end());
+  const Eigen::VectorXd d3 = o.omega3 * w3;
+  // eq. 27: (ω₁KᵀK + ω₂HᵀH + ω₃I) V = ω₁KᵀP + ω₃V⁰; factor once.
+  SparseMatrix A = o.omega1 * SparseMatrix(K.transpose() * K);
+  if (o.omega2 > 0) A += o.omega2 * SparseMatrix(H.transpose() * H);
+  // A tiny floor keeps vertices with ω₃ multiplier 0 and no face (isolated) well-posed.
+  A += SparseMatrix(d3.cwiseMax(1e-10).asDiagonal());
+  Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> chol;
+  chol.compute(A);
+  if (chol.info() != Eigen::Success)
+    throw SolverError("vertex update: Cholesky factorisation failed (is omega3 > 0?)");
+  const SparseMatrix Kt = o.omega1 * K.transpose();
+  const Eigen::MatrixXd rhs0 = d3.asDiagonal() * V0;
+
+  Eigen::MatrixXd X = V0;
+  Eigen::MatrixXd P(3 * nf, 3);
+  for (int k = 0; k < o.max_iterations; ++k) {
+    // P-step (eq. 25), per face.
+    Eigen::Index fallbacks = 0;
+#pragma omp parallel for schedule(static) reduction(+ : fallbacks)
+    for (Eigen::Index f = 0; f < nf; ++f) {
+      Eigen::Matrix3d C;  // rows: centred corners M V_f
+      for (int c = 0; c < 3; ++c) C.row(c) = X.row(F(f, c));
+      const Eigen::RowVector3d mean = C.colwise().mean();
+      C.rowwise() -= mean;
+      const Eigen::Vector3d nt = N.row(f).transpose();
+      const Eigen::Matrix3d proj = Eigen::Matrix3d::Identity() - nt * nt.transpose();
+      Eigen::Matrix3d Ph = C * proj;
+      const Eigen::Vector3d cur = (C.row(1) - C.row(0)).transpose().cross((C.row(2) - C.row(0)).transpose());
+      if (cur.dot(nt) < 0) {
+        // Closest degenerate triangle: project onto the top right-singular direction h of P̂
+        // (the top eigenvector of P̂ᵀP̂).
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(Ph.transpose() * Ph);
+        const Eigen::Vector3d h = es.eigenvectors().col(2);
+        Ph = Ph * (h * h.transpose());
+        ++fallbacks;
+      }
+      P.block<3, 3>(3 * f, 0) = Ph;
+    }
+    // V-step (eq. 27).
+    const Eigen::MatrixXd rhs = Kt * P + rhs0;
+    Eigen::MatrixXd Xn = chol.solve(rhs);
+    if (chol.info() != Eigen::Success || !Xn.allFinite()) throw SolverError("vertex update: solve failed");
+    const double change = std::sqrt((Xn - X).squaredNorm() / double(nv));
+    X = std::move(Xn);
+    res.change_history.push_back(change);
+    res.iterations = k + 1;
+    res.fallback_projections = fallbacks;
+    if (progress) {
+      ProgressEvent ev{"vertex update", k + 1, o.max_iterations, change};
+      if (!progress(ev)) throw Cancelled("vertex update cancelled");
+    }
+    if (change < o.tolerance) {
+      res.converged = true;
+      break;
+    }
+  }
+  res.V = norm.undo(X);
+  return res;
+}
+
+}  // namespace msmesh
