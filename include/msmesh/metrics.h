@@ -13,11 +13,19 @@ struct NormalErrors {
   Eigen::VectorXd angle_rad;  ///< #F per-face θ
 };
 
-/// Throws InvalidInput when F and F_truth differ (normal metrics need equal connectivity).
+/// θ per face is the angle between the unit normals of face f in (V, F) and (V_truth, F_truth);
+/// a face with zero area has no normal: θ = π/2 against a proper face (not counted as
+/// flipped), 0 when both are degenerate. Means are unweighted over faces, as in the papers.
+/// Throws InvalidInput when F and F_truth differ (normal metrics need equal connectivity):
+/// different #F, or a face made of other vertices. A face listed with the opposite
+/// orientation is the same face, and shows as flipped.
 NormalErrors normal_errors(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& V_truth,
                            const Eigen::MatrixXi& F_truth);
 
-/// Point-to-surface distances (true point-to-triangle distance through an AABB tree).
+/// Point-to-surface distances (true point-to-triangle distance through an AABB tree, built once
+/// in the constructor; queries run in parallel). Zero-area faces are skipped unless all are,
+/// in which case each face counts as its longest edge. Throws InvalidInput for an invalid
+/// mesh, a mesh without faces, or non-finite query points.
 class SurfaceDistance {
  public:
   SurfaceDistance(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F);
@@ -34,16 +42,19 @@ class SurfaceDistance {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Vertex-to-truth-surface distances, relative to the truth's bounding-box diagonal.
+/// Vertex-to-truth-surface distances, relative to the truth's bounding-box diagonal (of its
+/// referenced vertices). Only the result's referenced vertices count. The paper prints × 1e3.
 struct DistanceErrors {
   double mean = 0, rms = 0, max = 0;
   double area_weighted_rms = 0;  ///< RMS weighted by the result's vertex areas (Sun et al. 2007 E_v)
 };
 
+/// Throws InvalidInput when the result has no faces or the truth has a zero-size bounding box.
 DistanceErrors vertex_distance_errors(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
                                       const Eigen::MatrixXd& V_truth, const Eigen::MatrixXi& F_truth);
 
-/// Everything `msmesh eval` reports. Normal errors only when connectivity matches.
+/// Everything `msmesh eval` reports. Normal errors only when connectivity matches (same #F and
+/// the same vertices in every face); `normals` stays zero otherwise.
 struct Evaluation {
   bool same_connectivity = false;
   NormalErrors normals;

@@ -1,0 +1,246 @@
+#include "msmesh/metrics.h"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include "msmesh/errors.h"
+#include "msmesh/geometry.h"
+#include "msmesh/mesh.h"
+
+namespace msmesh {
+
+namespace {
+
+using Kernel = CGAL::Simple_cartesian<double>;
+using Point = Kernel::Point_3;
+using Triangle = Kernel::Triangle_3;
+using TriangleIterator = std::vector<Triangle>::const_iterator;
+using Primitive = CGAL::AABB_triangle_primitive<Kernel, TriangleIterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+
+constexpr double kPi = 3.141592653589793238462643383279502884;
+
+/// Indices of the vertices some face refers to, in increasing order.
+std::vector<int> referenced_vertices(Eigen::Index num_vertices, const Eigen::MatrixXi& F) {
+  std::vector<bool> used(num_vertices, false);
+  for (Eigen::Index i = 0; i < F.size(); ++i) used[F(i)] = true;
+  std::vector<int> r;
+  for (Eigen::Index v = 0; v < num_vertices; ++v)
+    if (used[v]) r.push_back(int(v));
+  return r;
+}
+
+/// Bounding-box diagonal of the vertices listed in `rows`.
+double diagonal_of(const Eigen::MatrixXd& V, const std::vector<int>& rows) {
+  if (rows.empty()) return 0.0;
+  Eigen::RowVector3d lo = V.row(rows[0]), hi = lo;
+  for (int v : rows) {
+    lo = lo.cwiseMin(V.row(v));
+    hi = hi.cwiseMax(V.row(v));
+  }
+  return (hi - lo).norm();
+}
+
+Eigen::Vector3d closest_on_segment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const Eigen::Vector3d ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return a + t * ab;
+}
+
+/// First face whose vertex set differs between F and G (same #F assumed), or -1. The order of
+/// a face's vertices may differ: a face listed with the opposite orientation is the same face
+/// with a reversed normal, which the metrics then count as flipped.
+Eigen::Index first_different_face(const Eigen::MatrixXi& F, const Eigen::MatrixXi& G) {
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    int a[3] = {F(f, 0), F(f, 1), F(f, 2)}, b[3] = {G(f, 0), G(f, 1), G(f, 2)};
+    std::sort(a, a + 3);
+    std::sort(b, b + 3);
+    if (!std::equal(a, a + 3, b)) return f;
+  }
+  return -1;
+}
+
+}  // namespace
+
+NormalErrors normal_errors(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& V_truth,
+                           const Eigen::MatrixXi& F_truth) {
+  validate_mesh(V, F, "result");
+  validate_mesh(V_truth, F_truth, "truth");
+  if (F.rows() != F_truth.rows()) {
+    std::ostringstream os;
+    os << "normal metrics need equal connectivity: result has " << F.rows() << " faces, truth " << F_truth.rows();
+    throw InvalidInput(os.str());
+  }
+  const Eigen::Index mismatch = first_different_face(F, F_truth);
+  if (mismatch >= 0) {
+    const Eigen::Index f = mismatch;
+    std::ostringstream os;
+    os << "normal metrics need equal connectivity: face " << f << " is (" << F(f, 0) << ", " << F(f, 1) << ", "
+       << F(f, 2) << ") in the result, (" << F_truth(f, 0) << ", " << F_truth(f, 1) << ", " << F_truth(f, 2)
+       << ") in the truth";
+    throw InvalidInput(os.str());
+  }
+
+  const Eigen::MatrixXd N = face_normals(V, F);
+  const Eigen::MatrixXd Nt = face_normals(V_truth, F_truth);
+  NormalErrors e;
+  e.angle_rad.resize(F.rows());
+  double sum = 0, sum2 = 0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    const Eigen::Vector3d a = N.row(f).transpose(), b = Nt.row(f).transpose();
+    const bool da = a.squaredNorm() == 0, db = b.squaredNorm() == 0;
+    double theta;
+    if (da || db) {
+      // A degenerate face has no normal: 0 when both are degenerate, else π/2 (no
+      // information about the orientation; not counted as flipped).
+      theta = (da && db) ? 0.0 : kPi / 2;
+    } else {
+      // atan2 keeps full accuracy for small angles, where acos(a·b) loses half the digits.
+      theta = std::atan2(a.cross(b).norm(), a.dot(b));
+    }
+    e.angle_rad(f) = theta;
+    sum += theta;
+    sum2 += theta * theta;
+    if (theta > kPi / 2) ++e.flipped;
+  }
+  if (F.rows() > 0) {
+    e.msae = sum2 / double(F.rows());
+    e.mean_angle_deg = sum / double(F.rows()) * 180.0 / kPi;
+  }
+  return e;
+}
+
+struct SurfaceDistance::Impl {
+  std::vector<Triangle> triangles;  // must outlive `tree`, which holds iterators into it
+  Tree tree;
+  // Used only when every face is degenerate: each face is then its longest edge.
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segments;
+
+  Eigen::Vector3d closest(const Eigen::Vector3d& p) const {
+    if (!triangles.empty()) {
+      const Point c = tree.closest_point(Point(p.x(), p.y(), p.z()));
+      return {c.x(), c.y(), c.z()};
+    }
+    Eigen::Vector3d best = segments[0].first;
+    double best_d2 = (p - best).squaredNorm();
+    for (const auto& s : segments) {
+      const Eigen::Vector3d c = closest_on_segment(p, s.first, s.second);
+      const double d2 = (p - c).squaredNorm();
+      if (d2 < best_d2) best_d2 = d2, best = c;
+    }
+    return best;
+  }
+};
+
+SurfaceDistance::SurfaceDistance(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) : impl_(new Impl) {
+  validate_mesh(V, F, "surface");
+  if (F.rows() == 0) throw InvalidInput("surface distance: the surface has no faces");
+  impl_->triangles.reserve(F.rows());
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    const Point a(V(F(f, 0), 0), V(F(f, 0), 1), V(F(f, 0), 2));
+    const Point b(V(F(f, 1), 0), V(F(f, 1), 1), V(F(f, 1), 2));
+    const Point c(V(F(f, 2), 0), V(F(f, 2), 1), V(F(f, 2), 2));
+    // Zero-area triangles are skipped: projecting onto them divides by their squared normal
+    // (the test below also catches normals whose square underflows), and the segment they
+    // span is normally an edge of their neighbours.
+    if (CGAL::cross_product(b - a, c - a).squared_length() > 0) impl_->triangles.emplace_back(a, b, c);
+  }
+  if (!impl_->triangles.empty()) {
+    impl_->tree.rebuild(impl_->triangles.cbegin(), impl_->triangles.cend());
+    // Builds the internal KD-tree now: afterwards queries are const and thread-safe.
+    impl_->tree.accelerate_distance_queries();
+  } else {
+    for (Eigen::Index f = 0; f < F.rows(); ++f) {
+      Eigen::Vector3d best_a, best_b;
+      double best = -1;
+      for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector3d a = V.row(F(f, k)).transpose(), b = V.row(F(f, (k + 1) % 3)).transpose();
+        if ((b - a).squaredNorm() > best) best = (b - a).squaredNorm(), best_a = a, best_b = b;
+      }
+      impl_->segments.emplace_back(best_a, best_b);
+    }
+  }
+}
+
+SurfaceDistance::~SurfaceDistance() = default;
+SurfaceDistance::SurfaceDistance(SurfaceDistance&&) noexcept = default;
+SurfaceDistance& SurfaceDistance::operator=(SurfaceDistance&&) noexcept = default;
+
+Eigen::MatrixXd SurfaceDistance::closest_points(const Eigen::MatrixXd& P) const {
+  if (P.rows() > 0 && P.cols() != 3) {
+    std::ostringstream os;
+    os << "surface distance: query points must be #P by 3, got " << P.rows() << " by " << P.cols();
+    throw InvalidInput(os.str());
+  }
+  for (Eigen::Index i = 0; i < P.rows(); ++i)
+    if (!P.row(i).allFinite()) {
+      std::ostringstream os;
+      os << "surface distance: query point " << i << " is not finite";
+      throw InvalidInput(os.str());
+    }
+  Eigen::MatrixXd C(P.rows(), 3);
+  const Impl& impl = *impl_;
+#pragma omp parallel for schedule(dynamic, 256)
+  for (Eigen::Index i = 0; i < P.rows(); ++i) C.row(i) = impl.closest(P.row(i).transpose()).transpose();
+  return C;
+}
+
+Eigen::VectorXd SurfaceDistance::distances(const Eigen::MatrixXd& P) const {
+  const Eigen::MatrixXd C = closest_points(P);
+  return (P.rows() > 0 ? Eigen::VectorXd((P - C).rowwise().norm()) : Eigen::VectorXd());
+}
+
+DistanceErrors vertex_distance_errors(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                                      const Eigen::MatrixXd& V_truth, const Eigen::MatrixXi& F_truth) {
+  validate_mesh(V, F, "result");
+  validate_mesh(V_truth, F_truth, "truth");
+  const std::vector<int> used = referenced_vertices(V.rows(), F);
+  if (used.empty()) throw InvalidInput("distance metrics: the result has no faces");
+  const double diag = diagonal_of(V_truth, referenced_vertices(V_truth.rows(), F_truth));
+  if (!(diag > 0)) throw InvalidInput("distance metrics: the truth has no faces or a zero-size bounding box");
+
+  Eigen::MatrixXd P(used.size(), 3);
+  for (size_t i = 0; i < used.size(); ++i) P.row(i) = V.row(used[i]);
+  const Eigen::VectorXd d = SurfaceDistance(V_truth, F_truth).distances(P) / diag;
+
+  // Vertex area: a third of the area of each incident face of the result (Sun et al. 2007).
+  const Eigen::VectorXd fa = face_areas(V, F);
+  Eigen::VectorXd area = Eigen::VectorXd::Zero(V.rows());
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) area(F(f, k)) += fa(f) / 3.0;
+
+  DistanceErrors e;
+  double wsum = 0, wd2 = 0;
+  for (size_t i = 0; i < used.size(); ++i) {
+    const double w = area(used[i]);
+    wsum += w;
+    wd2 += w * d(i) * d(i);
+  }
+  e.mean = d.mean();
+  e.rms = std::sqrt(d.squaredNorm() / double(d.size()));
+  e.max = d.maxCoeff();
+  // A result whose faces all have zero area has no weights: fall back to the plain RMS.
+  e.area_weighted_rms = wsum > 0 ? std::sqrt(wd2 / wsum) : e.rms;
+  return e;
+}
+
+Evaluation evaluate(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& V_truth,
+                    const Eigen::MatrixXi& F_truth) {
+  Evaluation ev;
+  ev.distances = vertex_distance_errors(V, F, V_truth, F_truth);
+  ev.same_connectivity = F.rows() == F_truth.rows() && first_different_face(F, F_truth) < 0;
+  if (ev.same_connectivity) ev.normals = normal_errors(V, F, V_truth, F_truth);
+  return ev;
+}
+
+}  // namespace msmesh
