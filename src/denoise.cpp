@@ -26,18 +26,20 @@ DenoiseOptions preset_options(const std::string& name) {
   // Units: mean edge length 1 (DESIGN.md §"Scale"). See docs/presets.md for how these
   // values were chosen on the public test meshes.
   if (name == "cad") {
-    o.normals.alpha = 2.0;
+    o.normals.alpha = 2.5;
     o.normals.beta = 0.02;
     o.normals.gamma = 2.0;
-    o.normals.rho = 0.9;
+    o.normals.rho = 0.1;
+    o.normals.penalty = 2.0;
     o.vertices.omega2 = 0.1;
     o.vertices.omega3 = 0.1;
   } else if (name == "smooth") {
-    o.normals.alpha = 5.0;
-    o.normals.beta = 0.02;
-    o.normals.gamma = 1.5;
-    o.normals.rho = 0.1;
-    o.vertices.omega2 = 0.1;
+    o.normals.alpha = 2.0;
+    o.normals.beta = 2.0;      // v ≈ 1 everywhere: the edge field only hurts organic shapes
+    o.normals.gamma = 2.0;
+    o.normals.rho = 0.9;
+    o.normals.penalty = 0.1;   // slow ADMM = 30 iterations stop well short of the TV staircase
+    o.vertices.omega2 = 0.3;
     o.vertices.omega3 = 0.3;
   } else {
     throw InvalidInput("unknown preset '" + name + "'; valid: cad, smooth, auto");

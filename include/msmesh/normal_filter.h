@@ -26,6 +26,9 @@ struct NormalFilterOptions {
   double tolerance = 1e-6;    ///< ε₁: stop when ‖N^{k+1} − N^k‖_U < ε₁ (§5.1)
   bool reweight = true;       ///< IRLA weights (NMSTV); false: all w_e = 1 (MSTV)
   double v_initial = 0.0;     ///< v⁰ (Algorithm 1 uses 0)
+  /// Project N onto the unit sphere after every N-step (the paper's reading). false: solve the
+  /// relaxed problem and project once at the end (stable ADMM; much better at heavy noise).
+  bool project_each_iteration = false;
   /// Throws InvalidInput naming the parameter, its value and the valid range.
   void validate() const;
 };

@@ -1,0 +1,180 @@
+// Denoising: invariances, convergence behaviour, the edge field on a noisy cube, and quality
+// on a noisy cube (issue 3's test targets).
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "msmesh/denoise.h"
+#include "msmesh/errors.h"
+#include "msmesh/geometry.h"
+#include "msmesh/metrics.h"
+#include "msmesh/noise.h"
+#include "msmesh/shapes.h"
+#include "msmesh/topology.h"
+
+using namespace msmesh;
+
+namespace {
+
+struct NoisyCube {
+  Mesh clean;
+  Eigen::MatrixXd noisy;
+};
+
+NoisyCube noisy_cube(int n = 10, double sigma = 0.2, std::uint64_t seed = 3) {
+  NoisyCube c;
+  c.clean = make_cube(n);
+  NoiseOptions no;
+  no.sigma = sigma;
+  no.seed = seed;
+  c.noisy = add_noise(c.clean.V, c.clean.F, no);
+  return c;
+}
+
+Eigen::Matrix3d some_rotation() {
+  return (Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()) *
+          Eigen::AngleAxisd(-1.1, Eigen::Vector3d::UnitZ()))
+      .toRotationMatrix();
+}
+
+}  // namespace
+
+TEST(Denoise, NoisyCubeWithinTwoDegreesOfClean) {
+  const NoisyCube c = noisy_cube(12, 0.2);
+  const DenoiseResult r = denoise(c.noisy, c.clean.F, preset_options("cad"));
+  const NormalErrors before = normal_errors(c.noisy, c.clean.F, c.clean.V, c.clean.F);
+  const NormalErrors after = normal_errors(r.V, c.clean.F, c.clean.V, c.clean.F);
+  EXPECT_GT(before.mean_angle_deg, 8.0);  // the noise is real
+  EXPECT_LT(after.mean_angle_deg, 2.0);
+  EXPECT_EQ(after.flipped, 0);
+}
+
+TEST(Denoise, InvariantUnderScaleRotationTranslation) {
+  const NoisyCube c = noisy_cube(8, 0.25);
+  const DenoiseOptions o = preset_options("cad");
+  const DenoiseResult r0 = denoise(c.noisy, c.clean.F, o);
+  const Eigen::Matrix3d R = some_rotation();
+  const double s = 1234.5;
+  const Eigen::RowVector3d t(1e3, -2e4, 5e2);
+  const Eigen::MatrixXd X = ((s * c.noisy * R.transpose()).rowwise() + t).eval();
+  const DenoiseResult r1 = denoise(X, c.clean.F, o);
+  const Eigen::MatrixXd back = ((r1.V.rowwise() - t) / s) * R;  // undo: R orthogonal
+  EXPECT_LT((back - r0.V).cwiseAbs().maxCoeff(), 1e-7);
+  EXPECT_LT((r1.v - r0.v).cwiseAbs().maxCoeff(), 1e-7);
+  EXPECT_LT((r1.normals * R - r0.normals).cwiseAbs().maxCoeff(), 1e-7);
+}
+
+TEST(Denoise, ResidualRisesThenFallsAndEnergyDrops) {
+  // DESIGN.md step 4: ‖p − ∇N‖ starts at 0 (v⁰ = 0: no shrinkage), rises, then falls and
+  // plateaus; it must stay bounded. The energy (15) ends below its peak.
+  const NoisyCube c = noisy_cube(10, 0.3);
+  NormalFilterOptions o = preset_options("cad").normals;
+  o.tolerance = 0;
+  const NormalFilterResult r = filter_normals(c.noisy, c.clean.F, o);
+  ASSERT_EQ(r.iterations, o.max_iterations);
+  const auto& h = r.residual_history;
+  const double peak = *std::max_element(h.begin(), h.end());
+  EXPECT_TRUE(std::isfinite(peak));
+  EXPECT_LT(h.back(), peak);
+  const auto& e = r.energy_history;
+  EXPECT_LT(e.back(), *std::max_element(e.begin(), e.end()));
+  // The normals settle: the last change is far below the first.
+  EXPECT_LT(r.change_history.back(), 0.2 * r.change_history.front());
+}
+
+TEST(Denoise, EdgeFieldLowOnCreasesHighOnFlatFaces) {
+  const NoisyCube c = noisy_cube(10, 0.2);
+  const NormalFilterResult r = filter_normals(c.noisy, c.clean.F, preset_options("cad").normals);
+  const Topology t = build_topology(c.clean.F, c.clean.V.rows());
+  const Eigen::VectorXd dihedral = dihedral_angles(c.clean.V, c.clean.F, t);
+  // The paper normalises v to [0, 1] before using it (§6.3).
+  const double lo = r.v.minCoeff(), hi = r.v.maxCoeff();
+  ASSERT_GT(hi - lo, 1e-6);
+  double crease = 0, flat = 0;
+  int nc = 0, nflat = 0;
+  for (Eigen::Index e = 0; e < t.num_edges(); ++e) {
+    const double vn = (r.v(e) - lo) / (hi - lo);
+    if (dihedral(e) > M_PI / 4) {
+      crease += vn;
+      ++nc;
+    } else {
+      flat += vn;
+      ++nflat;
+    }
+  }
+  ASSERT_GT(nc, 0);
+  EXPECT_LT(crease / nc, 0.35);
+  EXPECT_GT(flat / nflat, 0.9);
+}
+
+TEST(Denoise, MstvIsTheSameLoopWithoutReweighting) {
+  const NoisyCube c = noisy_cube(8, 0.2);
+  DenoiseOptions o = preset_options("cad");
+  o.method = DenoiseMethod::MSTV;
+  const DenoiseResult mstv = denoise(c.noisy, c.clean.F, o);
+  o.method = DenoiseMethod::NMSTV;
+  const DenoiseResult nmstv = denoise(c.noisy, c.clean.F, o);
+  EXPECT_GT((mstv.normals - nmstv.normals).norm(), 1e-3);
+  // Both denoise.
+  const double noisy_err = normal_errors(c.noisy, c.clean.F, c.clean.V, c.clean.F).msae;
+  EXPECT_LT(normal_errors(mstv.V, c.clean.F, c.clean.V, c.clean.F).msae, 0.2 * noisy_err);
+}
+
+TEST(Denoise, BilateralBaselineDenoises) {
+  const NoisyCube c = noisy_cube(10, 0.2);
+  DenoiseOptions o;
+  o.method = DenoiseMethod::Bilateral;
+  const DenoiseResult r = denoise(c.noisy, c.clean.F, o);
+  const double before = normal_errors(c.noisy, c.clean.F, c.clean.V, c.clean.F).msae;
+  EXPECT_LT(normal_errors(r.V, c.clean.F, c.clean.V, c.clean.F).msae, 0.3 * before);
+}
+
+TEST(Denoise, VertexUpdateKeepsAMeshThatAlreadyMatchesItsNormals) {
+  // With ω₂ = 0 the energy (24) is zero at V⁰ when the targets are V⁰'s own normals. (The
+  // fairness term is not: it pulls edge-adjacent triangle pairs towards parallelograms.)
+  const Mesh m = make_sphere(2);
+  VertexUpdateOptions o;
+  o.omega2 = 0;
+  const VertexUpdateResult r = update_vertices(m.V, m.F, face_normals(m.V, m.F), {}, o);
+  EXPECT_LT((r.V - m.V).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+TEST(Denoise, VertexUpdateFallbackAvoidsFlips) {
+  // Target normals opposite to a face's current normal trigger the degenerate projection
+  // (eq. 25) and the face must not end up inverted with respect to its neighbours' targets.
+  const NoisyCube c = noisy_cube(8, 0.2);
+  const DenoiseResult r = denoise(c.noisy, c.clean.F, preset_options("cad"));
+  EXPECT_EQ(normal_errors(r.V, c.clean.F, c.clean.V, c.clean.F).flipped, 0);
+}
+
+TEST(Denoise, RejectsBadParametersWithTheirRange) {
+  const Mesh m = make_cube(2);
+  DenoiseOptions o = preset_options("cad");
+  o.normals.alpha = -1;
+  try {
+    denoise(m.V, m.F, o);
+    FAIL() << "expected InvalidInput";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("alpha"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("> 0"), std::string::npos);
+  }
+  o = preset_options("cad");
+  o.normals.relaxation = 2.0;
+  EXPECT_THROW(denoise(m.V, m.F, o), InvalidInput);
+  o = preset_options("cad");
+  o.vertices.omega3 = 0;
+  EXPECT_THROW(denoise(m.V, m.F, o), InvalidInput);
+  EXPECT_THROW(preset_options("nonsense"), InvalidInput);
+}
+
+TEST(Denoise, ProgressIsReportedAndCanCancel) {
+  const Mesh m = make_cube(4);
+  int calls = 0;
+  denoise(m.V, m.F, preset_options("cad"), [&](const ProgressEvent&) {
+    ++calls;
+    return true;
+  });
+  EXPECT_GT(calls, 2);
+  EXPECT_THROW(denoise(m.V, m.F, preset_options("cad"), [](const ProgressEvent&) { return false; }), Cancelled);
+}
