@@ -1,0 +1,466 @@
+"""msmesh: feature-preserving mesh denoising (NMSTV normal filtering + vertex updating).
+
+Meshes are numpy arrays: V is (#V, 3) float vertex positions, F is (#F, 3) integer vertex
+indices of triangles (counter-clockwise seen from outside). Every function checks its
+arguments first and raises InvalidInputError (a ValueError) with a message naming the argument,
+the row and the value; nothing is modified in place.
+
+Errors: InvalidInputError (ValueError), IoError (OSError), SolverError (RuntimeError),
+Cancelled (a progress callback returned False); all derive from msmesh.Error.
+
+Long calls release the GIL, so they can run in a thread while Python goes on. A progress
+callback ``progress(event)`` gets a ProgressEvent (stage, iteration, max_iterations, residual)
+after every iteration; returning False cancels the call (Cancelled), returning None or True
+continues; an exception it raises is re-raised by the call.
+"""
+
+import numpy as np
+
+from . import _checks
+from ._core import (
+    BilateralOptions,
+    Cancelled,
+    DenoiseMethod,
+    DenoiseOptions,
+    Error,
+    InvalidInputError,
+    IoError,
+    NormalFilterOptions,
+    ProgressEvent,
+    SolverError,
+    VertexUpdateOptions,
+)
+from . import _core
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "denoise", "filter_normals", "update_vertices", "add_noise", "evaluate", "choose_preset",
+    "read_mesh", "write_mesh", "make_shape", "shape_names", "preset_names", "PARAMETERS",
+    "Error", "InvalidInputError", "IoError", "SolverError", "Cancelled", "ProgressEvent",
+    "DenoiseOptions", "DenoiseMethod", "NormalFilterOptions", "VertexUpdateOptions", "BilateralOptions",
+]
+
+_METHODS = {"nmstv": DenoiseMethod.NMSTV, "mstv": DenoiseMethod.MSTV, "bilateral": DenoiseMethod.Bilateral}
+_PRESETS = ("cad", "smooth", "auto")
+
+# Keyword parameters, named like the CLI's options (`msmesh denoise --help`, with '-' -> '_'):
+# name -> (kind, [attribute path in DenoiseOptions, ...]). As in the CLI, vertex_iterations
+# sets both the NMSTV/MSTV vertex update and the bilateral one.
+PARAMETERS = {
+    "alpha": (float, [("normals", "alpha")]),
+    "beta": (float, [("normals", "beta")]),
+    "gamma": (float, [("normals", "gamma")]),
+    "rho": (float, [("normals", "rho")]),
+    "epsilon": (float, [("normals", "epsilon")]),
+    "penalty": (float, [("normals", "penalty")]),
+    "nu": (float, [("normals", "relaxation")]),
+    "v0": (float, [("normals", "v_initial")]),
+    "normal_iterations": (int, [("normals", "max_iterations")]),
+    "vertex_iterations": (int, [("vertices", "max_iterations"), ("bilateral", "vertex_iterations")]),
+    "omega1": (float, [("vertices", "omega1")]),
+    "omega2": (float, [("vertices", "omega2")]),
+    "omega3": (float, [("vertices", "omega3")]),
+    "sigma_r": (float, [("bilateral", "sigma_r")]),
+    "sigma_s": (float, [("bilateral", "sigma_s")]),
+    "bilateral_iterations": (int, [("bilateral", "normal_iterations")]),
+}
+_NORMAL_PARAMETERS = {k: PARAMETERS[k] for k in
+                      ("alpha", "beta", "gamma", "rho", "epsilon", "penalty", "nu", "v0", "normal_iterations")}
+_VERTEX_PARAMETERS = {"omega1": PARAMETERS["omega1"], "omega2": PARAMETERS["omega2"],
+                      "omega3": PARAMETERS["omega3"], "vertex_iterations": (int, [("vertices", "max_iterations")])}
+
+
+def preset_names():
+    """Preset names accepted by denoise(): cad, smooth, auto."""
+    return list(_PRESETS)
+
+
+def shape_names():
+    """Names accepted by make_shape()."""
+    return list(_core.shape_names())
+
+
+def _apply_parameters(options, params, table, function):
+    """Sets keyword parameters on an options object following `table` (name -> (kind,
+    [attribute path, ...])). Unknown names are a TypeError (as for any Python function), bad
+    values an InvalidInputError; ranges are checked by the library's validate()."""
+    for name, value in params.items():
+        if name not in table:
+            raise TypeError(f"{function}() got an unexpected keyword argument '{name}'; "
+                            f"parameters: {', '.join(table)}")
+        kind, targets = table[name]
+        if kind is int:
+            value = _checks.integer(value, name)
+        elif kind is bool:
+            value = _checks.boolean(value, name)
+        else:
+            value = _checks.real(value, name)
+        for path in targets:
+            owner = options
+            for attribute in path[:-1]:
+                owner = getattr(owner, attribute)
+            setattr(owner, path[-1], value)
+
+
+def _options_dict(options):
+    n, v, b = options.normals, options.vertices, options.bilateral
+    if options.method == DenoiseMethod.Bilateral:
+        return {"sigma_r": b.sigma_r, "sigma_s": b.sigma_s, "bilateral_iterations": b.normal_iterations,
+                "vertex_iterations": b.vertex_iterations}
+    return dict(_normal_options_dict(n), omega1=v.omega1, omega2=v.omega2, omega3=v.omega3,
+                vertex_iterations=v.max_iterations, vertex_tolerance=v.tolerance)
+
+
+def _normal_options_dict(n):
+    return {"alpha": n.alpha, "beta": n.beta, "gamma": n.gamma, "rho": n.rho, "epsilon": n.epsilon,
+            "penalty": n.penalty, "nu": n.relaxation, "v0": n.v_initial, "normal_iterations": n.max_iterations,
+            "normal_tolerance": n.tolerance}
+
+
+def _resolve_preset(V, F, preset, report):
+    """DenoiseOptions of a preset name; 'auto' is chosen from the mesh (recorded in report)."""
+    _checks.choice(preset, "preset", _PRESETS)
+    report["preset_requested"] = preset
+    if preset == "auto":
+        c = _core.choose_preset(V, F)
+        preset = c["preset"]
+        report["auto_sharp_fraction"] = c["sharp_fraction"]
+        report["auto_flat_fraction"] = c["flat_fraction"]
+        report["auto_noise_level"] = c["noise_level"]
+    report["preset"] = preset
+    return _core.preset_options(preset)
+
+
+def choose_preset(V, F):
+    """The preset 'auto' picks for a mesh: dict(preset, sharp_fraction, flat_fraction,
+    noise_level)."""
+    V, F = _checks.mesh(V, F)
+    return _core.choose_preset(V, F)
+
+
+def denoise(V, F, preset="cad", method="nmstv", progress=None, **params):
+    """Denoises a mesh: normal filtering, then vertex updating (F is unchanged).
+
+    V: (#V, 3) positions; F: (#F, 3) triangle indices.
+    preset: 'cad' (sharp features), 'smooth' (organic shapes, scans) or 'auto' (chosen from the
+        mesh, as `msmesh denoise --preset auto`).
+    method: 'nmstv' (the paper), 'mstv' (all IRLA weights 1) or 'bilateral' (Zheng et al. 2011).
+    progress: None or a callable(ProgressEvent) -> False to cancel.
+    params: overrides of the preset, named like the CLI's options: alpha, beta, gamma, rho,
+        epsilon, penalty, nu, v0, normal_iterations, vertex_iterations, omega1, omega2, omega3,
+        sigma_r, sigma_s, bilateral_iterations (see PARAMETERS).
+
+    Returns (V_new, report): V_new (#V, 3); report a dict with the filtered 'normals' (#F, 3),
+    the edge field 'v' (#E, None for bilateral) on 'edges' (#E, 2), 'preset' (the one used),
+    'method', 'parameters', iteration counts, convergence flags, residual and change
+    histories, and times in seconds.
+    """
+    V, F = _checks.mesh(V, F)
+    _checks.choice(method, "method", tuple(_METHODS))
+    progress = _checks.progress(progress)
+    report = {}
+    options = _resolve_preset(V, F, preset, report)
+    options.method = _METHODS[method]
+    _apply_parameters(options, params, PARAMETERS, "denoise")
+    result = _core.denoise(V, F, options, progress)
+    V_new = result.pop("V")
+    report["method"] = method
+    report["parameters"] = _options_dict(options)
+    report.update(result)
+    report["seconds_total"] = report["seconds_normals"] + report["seconds_vertices"]
+    return V_new, report
+
+
+def filter_normals(V, F, preset=None, method="nmstv", normals0=None, progress=None, **params):
+    """Algorithm 1 alone: filters the face normals of a mesh.
+
+    preset: None (the library defaults of NormalFilterOptions), 'cad', 'smooth' or 'auto'.
+    method: 'nmstv' (IRLA reweighting) or 'mstv' (all weights 1).
+    normals0: (#F, 3) input normals N0; None = the face normals of V.
+    params: alpha, beta, gamma, rho, epsilon, penalty, nu, v0, normal_iterations.
+
+    Returns (N, v, report): N (#F, 3) unit normals, v (#E) the edge field (about 0 on features,
+    1 elsewhere) on the edges report['edges'] (#E, 2); report has iterations, convergence,
+    residual/change/energy histories and seconds.
+    """
+    V, F = _checks.mesh(V, F)
+    _checks.choice(method, "method", ("nmstv", "mstv"))
+    progress = _checks.progress(progress)
+    N0 = np.zeros((0, 3)) if normals0 is None else _checks.real_matrix(normals0, "normals0")
+    if normals0 is not None and N0.shape[0] != F.shape[0]:
+        raise InvalidInputError(f"normals0: must have one row per face ({F.shape[0]}), got {N0.shape[0]}")
+    report = {}
+    options = DenoiseOptions() if preset is None else _resolve_preset(V, F, preset, report)
+    _apply_parameters(options, params, _NORMAL_PARAMETERS, "filter_normals")
+    normal_options = options.normals
+    normal_options.reweight = method == "nmstv"
+    result = _core.filter_normals(V, F, normal_options, N0, progress)
+    N, v = result.pop("normals"), result.pop("v")
+    report["method"] = method
+    report["parameters"] = _normal_options_dict(normal_options)
+    report.update(result)
+    return N, v, report
+
+
+def update_vertices(V, F, N, v=None, preset=None, progress=None, **params):
+    """Algorithm 2 alone: moves the vertices so that the face normals match N.
+
+    N: (#F, 3) target unit normals; v: None (all ones) or the (#E,) edge field of
+    filter_normals (values are used as given; denoise() clips them to [0, 1]).
+    preset: None (the library defaults of VertexUpdateOptions), 'cad', 'smooth' or 'auto'.
+    params: omega1, omega2, omega3, vertex_iterations.
+
+    Returns (V_new, report): report has iterations, convergence, change history and seconds.
+    """
+    V, F = _checks.mesh(V, F)
+    N = _checks.real_matrix(N, "N")
+    if N.shape[0] != F.shape[0]:
+        raise InvalidInputError(f"N: must have one row per face ({F.shape[0]}), got {N.shape[0]}")
+    progress = _checks.progress(progress)
+    v = np.zeros(0) if v is None else _checks.real_vector(v, "v")
+    report = {}
+    options = DenoiseOptions() if preset is None else _resolve_preset(V, F, preset, report)
+    _apply_parameters(options, params, _VERTEX_PARAMETERS, "update_vertices")
+    result = _core.update_vertices(V, F, N, v, options.vertices, progress)
+    V_new = result.pop("V")
+    o = options.vertices
+    report["parameters"] = {"omega1": o.omega1, "omega2": o.omega2, "omega3": o.omega3,
+                            "vertex_iterations": o.max_iterations, "vertex_tolerance": o.tolerance}
+    report.update(result)
+    return V_new, report
+
+
+def add_noise(V, F, sigma=0.2, direction="normal", impulsive=0.0, seed=0):
+    """Seeded noise as in the denoising literature; returns noisy V (#V, 3).
+
+    sigma: standard deviation in units of the mean edge length (>= 0).
+    direction: 'normal' (along vertex normals) or 'random' (uniform directions).
+    impulsive: 0 for Gaussian noise on every vertex; in (0, 1] the fraction of vertices hit.
+    seed: non-negative integer; equal seeds give equal noise on any machine (and equal to
+        `msmesh noise --seed`).
+    """
+    V, F = _checks.mesh(V, F)
+    sigma = _checks.real(sigma, "sigma", minimum=0.0)
+    _checks.choice(direction, "direction", ("normal", "random"))
+    impulsive = _checks.real(impulsive, "impulsive", minimum=0.0)
+    seed = _checks.integer(seed, "seed", minimum=0, maximum=2**64 - 1)
+    return _core.add_noise(V, F, sigma, direction, impulsive, seed)
+
+
+def evaluate(V, F, V_truth, F_truth):
+    """Error figures of a result (V, F) against a ground truth (as `msmesh eval`).
+
+    Returns a dict: same_connectivity; msae (radians^2), msae_e3 (= msae x 1e3, as printed in
+    the papers), mean_angle_deg, flipped (faces off by > 90 deg), angle_rad (#F) -- these are
+    None unless the connectivity is the same; distance_mean, distance_rms, distance_max,
+    distance_area_weighted_rms: vertex-to-truth-surface distances relative to the truth's
+    bounding-box diagonal.
+    """
+    V, F = _checks.mesh(V, F)
+    V_truth, F_truth = _checks.mesh(V_truth, F_truth, prefix="truth ")
+    return _core.evaluate(V, F, V_truth, F_truth)
+
+
+def read_mesh(path):
+    """Reads OBJ, OFF, PLY or STL (by extension); returns (V, F). Raises IoError (an OSError).
+    Polygons are triangulated; faces repeating a vertex are dropped."""
+    V, F, _dropped = _core.read_mesh(_checks.path(path))
+    return V, F
+
+
+def write_mesh(path, V, F, binary=True):
+    """Writes OBJ, OFF, PLY or STL (by extension; PLY and STL binary unless binary=False).
+    The file appears completely or not at all. Raises IoError (an OSError)."""
+    path = _checks.path(path)
+    V, F = _checks.mesh(V, F, allow_empty_faces=True)
+    _core.write_mesh(path, V, F, _checks.boolean(binary, "binary"))
+
+
+def make_shape(name, resolution):
+    """A built-in test shape (see shape_names()) at a resolution level >= 1; returns (V, F)."""
+    _checks.choice(name, "name", tuple(_core.shape_names()))
+    resolution = _checks.integer(resolution, "resolution", minimum=1)
+    return _core.make_shape(name, resolution)
+
+
+# ---- applications (present when the library was built with them) --------------------------------
+
+if hasattr(_core, "segment"):
+    from ._core import MulticutOptions, SegmentOptions
+
+    # Keyword parameters of segment(): the normal filtering ones of filter_normals() plus the
+    # multicut's local search; the options of `msmesh segment` are named arguments.
+    SEGMENT_PARAMETERS = dict(
+        _NORMAL_PARAMETERS,
+        local_search=(bool, [("multicut", "local_search")]),
+        max_local_rounds=(int, [("multicut", "max_local_rounds")]),
+    )
+
+    def _denoise_first(V, F, preset, progress, report):
+        """The positions `--denoise` of `msmesh segment` / `features` segments: denoise() with
+        the preset (NMSTV), recorded in report['V_denoised']."""
+        options = _core.preset_options(preset)
+        V = _core.denoise(V, F, options, progress)["V"]
+        report["V_denoised"] = V
+        return V
+
+    def segment(V, F, preset="cad", denoise=False, angle=15.0, clamp=0.001, min_area=None, progress=None,
+                **params):
+        """Segments a mesh into piecewise-smooth parts (paper 6.3), as `msmesh segment`:
+        Algorithm 1 gives the edge field v, a multicut of the face graph gives the segments.
+
+        preset: 'cad' or 'smooth', the normal filtering parameters (as `--preset`).
+        denoise: denoise with the preset first and segment the result (`--denoise`).
+        angle: faces whose regularised normals are within this many degrees never split (`--angle`).
+        clamp: split probabilities are clamped to [clamp, 1 - clamp] (`--clamp`).
+        min_area: merge segments smaller than this fraction of the area; None = the library
+            default (`--min-area`).
+        params: overrides of the normal filtering parameters (alpha, ..., normal_iterations)
+            and local_search (True), max_local_rounds (50) of the multicut.
+
+        Returns (labels, report): labels (#F,) int32 in [0, count), segment 0 the largest;
+        report has count, areas, objective, multicut_count, normals, v, v_normalized,
+        split_probability on report['edges'], iteration counts, seconds, and V_denoised when
+        denoise=True.
+        """
+        V, F = _checks.mesh(V, F)
+        _checks.choice(preset, "preset", ("cad", "smooth"))
+        denoise = _checks.boolean(denoise, "denoise")
+        progress = _checks.progress(progress)
+        options = SegmentOptions()
+        options.normals = _core.preset_options(preset).normals
+        options.smooth_angle_deg = _checks.real(angle, "angle")
+        options.clamp_probability = _checks.real(clamp, "clamp")
+        if min_area is not None:
+            options.min_area_fraction = _checks.real(min_area, "min_area")
+        _apply_parameters(options, params, SEGMENT_PARAMETERS, "segment")
+        options.validate()  # before a denoise=True spends time
+        report = {}
+        if denoise:
+            V = _denoise_first(V, F, preset, progress, report)
+        report.update(_core.segment(V, F, options, progress))
+        labels = report.pop("labels")
+        report["preset"] = preset
+        report["parameters"] = dict(_normal_options_dict(options.normals), angle=options.smooth_angle_deg,
+                                    clamp=options.clamp_probability, min_area=options.min_area_fraction,
+                                    local_search=options.multicut.local_search,
+                                    max_local_rounds=options.multicut.max_local_rounds)
+        return labels, report
+
+    def feature_lines(V, F, v=None, threshold=0.5, min_edges=1, preset="cad", denoise=False, progress=None):
+        """Feature lines: chains of the edges whose normalised edge field is below `threshold`
+        (in (0, 1]), as `msmesh features`.
+
+        v: the (#E,) edge field of filter_normals() / segment() (edges of report['edges']); None
+            computes it with filter_normals(preset=preset), after denoise() when denoise=True.
+        Returns a list of int32 arrays of vertex indices (a closed loop repeats its first
+        vertex); polylines with fewer than `min_edges` edges are dropped.
+        """
+        V, F = _checks.mesh(V, F)
+        threshold = _checks.real(threshold, "threshold")
+        min_edges = _checks.integer(min_edges, "min_edges", minimum=0)
+        if v is None:
+            _checks.choice(preset, "preset", ("cad", "smooth"))
+            progress = _checks.progress(progress)
+            if _checks.boolean(denoise, "denoise"):
+                V = _denoise_first(V, F, preset, progress, {})
+            v = _core.filter_normals(V, F, _core.preset_options(preset).normals, np.zeros((0, 3)), progress)["v"]
+        else:
+            v = _checks.real_vector(v, "v")
+        return _core.feature_lines(V, F, v, threshold, min_edges)
+
+    def rand_index(labels_a, labels_b):
+        """Rand index of two labellings of the same elements (in [0, 1]; 1 = same partition)."""
+        a = _checks.labels(labels_a, "labels_a")
+        b = _checks.labels(labels_b, "labels_b")
+        return _core.rand_index(a, b)
+
+    __all__ += ["segment", "feature_lines", "rand_index", "SegmentOptions", "MulticutOptions", "SEGMENT_PARAMETERS"]
+
+
+if hasattr(_core, "inpaint"):
+    from ._core import InpaintOptions
+
+    # Tuning parameters, named like the options of `msmesh inpaint`.
+    INPAINT_PARAMETERS = {
+        "alpha": (float, [("normals", "alpha")]),
+        "beta": (float, [("normals", "beta")]),
+        "gamma": (float, [("normals", "gamma")]),
+        "rho": (float, [("normals", "rho")]),
+        "normal_iterations": (int, [("normals", "max_iterations")]),
+        "omega2": (float, [("vertices", "omega2")]),
+        "omega3": (float, [("vertices", "omega3")]),
+        "vertex_iterations": (int, [("vertices", "max_iterations")]),
+        "outside_alpha": (float, [("outside_alpha",)]),
+        "inside_alpha": (float, [("inside_alpha",)]),
+        "inside_beta": (float, [("inside_beta",)]),
+        "inside_omega3": (float, [("inside_omega3",)]),
+        "rounds": (int, [("rounds",)]),
+        "context_rings": (int, [("context_rings",)]),
+    }
+
+    def find_holes(V, F):
+        """The boundary loops of a mesh: a list of dicts (loop: vertex indices, edges,
+        diameter and length in mean edge lengths, component, outer_boundary, simple)."""
+        V, F = _checks.mesh(V, F)
+        return _core.find_holes(V, F)
+
+    def inpaint(V, F, holes=None, max_hole_edges=0, max_hole_diameter=0.0, fill_outer=False,
+                recover_features=True, free_ring=0, progress=None, **params):
+        """Fills the holes of a mesh and recovers their sharp features (paper 6.2), like
+        `msmesh inpaint`.
+
+        holes: None (every hole within the limits, outer boundaries excepted) or indices into
+            find_holes(); max_hole_edges, max_hole_diameter (mean edge lengths): 0 = no limit;
+        fill_outer: also fill outer boundaries; recover_features: False = CGAL fill-and-fair
+            only; free_ring: rings of input vertices around each hole that may move.
+        params: alpha, beta, gamma, rho, normal_iterations, omega2, omega3, vertex_iterations,
+            outside_alpha, inside_alpha, inside_beta, inside_omega3, rounds, context_rings.
+
+        Returns (V_new, F_new, report): input vertices and faces first, then the new ones;
+        report has new_faces / new_vertices (bool arrays), holes (one dict per hole with its
+        action 'filled'/'skipped'/'failed' and reason), filled/skipped/failed counts, iteration
+        counts and seconds.
+        """
+        V, F = _checks.mesh(V, F)
+        progress = _checks.progress(progress)
+        options = InpaintOptions()
+        if holes is not None:
+            options.holes = [_checks.integer(h, "holes", minimum=0) for h in np.asarray(holes).ravel().tolist()]
+        options.max_hole_edges = _checks.integer(max_hole_edges, "max_hole_edges", minimum=0)
+        options.max_hole_diameter = _checks.real(max_hole_diameter, "max_hole_diameter", minimum=0.0)
+        options.fill_outer_boundary = _checks.boolean(fill_outer, "fill_outer")
+        options.recover_features = _checks.boolean(recover_features, "recover_features")
+        options.free_ring = _checks.integer(free_ring, "free_ring", minimum=0)
+        _apply_parameters(options, params, INPAINT_PARAMETERS, "inpaint")
+        report = _core.inpaint(V, F, options, progress)
+        return report.pop("V"), report.pop("F"), report
+
+    def inpaint_errors(V_input, F_input, V_result, F_result, V_truth, F_truth, new_faces=None):
+        """Error figures of an inpainting result against a ground truth (distances relative
+        to the truth's bounding-box diagonal; see inpaint.h). new_faces: (#F_result,) bools, or
+        None for the faces beyond the input's."""
+        V_input, F_input = _checks.mesh(V_input, F_input, prefix="input ")
+        V_result, F_result = _checks.mesh(V_result, F_result, prefix="result ")
+        V_truth, F_truth = _checks.mesh(V_truth, F_truth, prefix="truth ")
+        if new_faces is None:
+            flags = []
+        else:
+            a = np.asarray(new_faces)
+            if a.dtype != np.bool_ or a.shape != (F_result.shape[0],):
+                raise InvalidInputError(f"new_faces: must be {F_result.shape[0]} bools, got {a.dtype} {a.shape}")
+            flags = a.tolist()
+        return _core.inpaint_errors(V_input, F_input, V_result, F_result, flags, V_truth, F_truth)
+
+    def punch_holes(V, F, count, radius, seed=0, on_features=False):
+        """Punches `count` holes (geodesic disks of `radius` mean edge lengths, seeded) into a
+        mesh, for tests and demos. Returns (V_new, F_new, info) with info vertex_map,
+        old_to_new, centers and punched (the number of holes made)."""
+        V, F = _checks.mesh(V, F)
+        count = _checks.integer(count, "count", minimum=0)
+        radius = _checks.real(radius, "radius", minimum=0.0)
+        seed = _checks.integer(seed, "seed", minimum=0, maximum=2**64 - 1)
+        return _core.punch_holes(V, F, count, radius, seed, _checks.boolean(on_features, "on_features"))
+
+    __all__ += ["find_holes", "inpaint", "inpaint_errors", "punch_holes", "InpaintOptions", "INPAINT_PARAMETERS"]
