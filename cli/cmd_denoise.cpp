@@ -97,7 +97,8 @@ void run(const Args& a, const Overrides& ov) {
   if (a.json) {
     Json j;
     j.add("input", a.input).add("output", a.output).add("preset", preset).add("method", a.method);
-    if (a.preset == "auto") j.add("auto_sharp_fraction", choice.sharp_fraction);
+    if (a.preset == "auto")
+      j.add("auto_sharp_fraction", choice.sharp_fraction).add("auto_flat_fraction", choice.flat_fraction);
     j.add("vertices", static_cast<long long>(mesh.V.rows())).add("faces", static_cast<long long>(mesh.F.rows()));
     Json params;
     params.add("alpha", o.normals.alpha).add("beta", o.normals.beta).add("gamma", o.normals.gamma)

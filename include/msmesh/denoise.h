@@ -43,8 +43,9 @@ DenoiseOptions preset_options(const std::string& name);
 /// What choose_preset() saw.
 struct PresetChoice {
   std::string preset;          ///< "cad" or "smooth"
-  double sharp_fraction = 0;   ///< fraction of edge length on strong creases after a pre-smoothing
-  double noise_level = 0;      ///< estimated noise, mean-edge units
+  double sharp_fraction = 0;   ///< fraction of edge length with dihedral > 30° after pre-smoothing
+  double flat_fraction = 0;    ///< fraction of edge length with dihedral < 1° after pre-smoothing
+  double noise_level = 0;      ///< mean angle (radians) between input and pre-smoothed normals
 };
 
 /// Picks "cad" or "smooth" for a mesh from the mesh itself (see docs/presets.md).
