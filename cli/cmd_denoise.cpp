@@ -41,7 +41,9 @@ void run(const Args& a, const Overrides& ov) {
 
   std::string preset = a.preset;
   PresetChoice choice;
-  if (preset == "auto") {
+  if (preset == "auto" && a.method == "bilateral") {
+    preset = "cad";  // the bilateral baseline has its own parameters; the preset is unused
+  } else if (preset == "auto") {
     choice = choose_preset(mesh.V, mesh.F);
     preset = choice.preset;
   }
@@ -128,8 +130,11 @@ void run(const Args& a, const Overrides& ov) {
   }
   std::cout << "denoised " << a.input << " -> " << a.output << " (" << mesh.V.rows() << " vertices, "
             << mesh.F.rows() << " faces)\n";
-  std::cout << "  method " << a.method << ", preset " << preset;
-  if (a.preset == "auto") std::cout << " (chosen automatically)";
+  std::cout << "  method " << a.method;
+  if (o.method != DenoiseMethod::Bilateral) {
+    std::cout << ", preset " << preset;
+    if (a.preset == "auto") std::cout << " (chosen automatically)";
+  }
   std::cout << "\n";
   if (o.method != DenoiseMethod::Bilateral) {
     std::cout << "  normal filtering: " << r.normal_report.iterations << " iterations, "

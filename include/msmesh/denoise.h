@@ -33,8 +33,9 @@ struct DenoiseOptions {
   void validate() const;
 };
 
-/// Preset names: "cad" (sharp features, ρ = 0.9), "smooth" (organic and scanned shapes,
-/// ρ = 0.1). "auto" is resolved per mesh by choose_preset().
+/// Preset names: "cad" (CAD parts and scans of them: sharp creases kept), "smooth" (organic
+/// shapes: the edge field is effectively off). "auto" is resolved per mesh by choose_preset().
+/// Values and how they were measured: docs/presets.md.
 std::vector<std::string> preset_names();
 
 /// Options of a named preset ("cad" or "smooth"); throws InvalidInput for other names.
