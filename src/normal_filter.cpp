@@ -1,7 +1,5 @@
 #include "msmesh/normal_filter.h"
 
-#include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCholesky>
 #include <cmath>
 #include <sstream>
 
@@ -11,6 +9,7 @@
 #include "msmesh/operators.h"
 #include "msmesh/topology.h"
 #include "normalize.h"
+#include "sparse_solve.h"
 
 namespace msmesh {
 
@@ -87,6 +86,66 @@ Eigen::VectorXd ones_or(const Eigen::VectorXd& w, Eigen::Index n, const char* wh
   return w;
 }
 
+// c · Dᵀ L_W D (#E by #E), assembled from the corner lines: line l = 3f+k joins the edge
+// entering corner k (e+, opposite corner k+1) and the edge leaving it (e−, opposite k+2).
+SparseMatrix edge_smoothness_matrix(const Topology& topo, const Eigen::VectorXd& line_lengths, double c) {
+  using Triplet = Eigen::Triplet<double>;
+  std::vector<Triplet> t;
+  t.reserve(static_cast<size_t>(12 * topo.num_faces()) + static_cast<size_t>(topo.num_edges()));
+  for (Eigen::Index e = 0; e < topo.num_edges(); ++e) t.emplace_back(e, e, 0.0);  // keep every diagonal
+  for (Eigen::Index f = 0; f < topo.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int ep = topo.face_edges(f, (k + 1) % 3), em = topo.face_edges(f, (k + 2) % 3);
+      const double w = c * line_lengths(3 * f + k);
+      t.emplace_back(ep, ep, w);
+      t.emplace_back(em, em, w);
+      t.emplace_back(ep, em, -w);
+      t.emplace_back(em, ep, -w);
+    }
+  SparseMatrix K(topo.num_edges(), topo.num_edges());
+  K.setFromTriplets(t.begin(), t.end());
+  return K;
+}
+
+// Solves (K − diag(K) + diag(d)) v = b for the symmetric positive definite v-step matrix by
+// Jacobi-preconditioned conjugate gradients warm-started from v (the matrix is strongly
+// diagonally dominant for small ε, so this takes a few iterations). Returns the iteration
+// count, or −1 when it did not converge. Deterministic: fixed-order reductions.
+int solve_v_step(const SparseMatrix& K, const Eigen::VectorXd& K_diag, const Eigen::VectorXd& d,
+                 const Eigen::VectorXd& b, Eigen::VectorXd& v) {
+  const Eigen::Index n = b.size();
+  auto apply = [&](const Eigen::VectorXd& x, Eigen::VectorXd& y) {
+    // K is symmetric: column j of K is row j.
+#pragma omp parallel for schedule(static)
+    for (Eigen::Index j = 0; j < n; ++j) {
+      double s = (d(j) - K_diag(j)) * x(j);
+      for (SparseMatrix::InnerIterator it(K, j); it; ++it) s += it.value() * x(it.row());
+      y(j) = s;
+    }
+  };
+  Eigen::VectorXd r(n), z(n), p(n), q(n);
+  apply(v, q);
+  r = b - q;
+  const double b_norm = std::max(b.norm(), 1e-300);
+  const double tol = 1e-10 * b_norm;
+  if (r.norm() <= tol) return 0;
+  z = r.cwiseQuotient(d);
+  p = z;
+  double rz = r.dot(z);
+  for (int it = 1; it <= 1000; ++it) {
+    apply(p, q);
+    const double alpha = rz / p.dot(q);
+    v += alpha * p;
+    r -= alpha * q;
+    if (r.norm() <= tol) return it;
+    z = r.cwiseQuotient(d);
+    const double rz_new = r.dot(z);
+    p = z + (rz_new / rz) * p;
+    rz = rz_new;
+  }
+  return -1;
+}
+
 }  // namespace
 
 double nmstv_energy(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
@@ -105,9 +164,9 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
   o.validate();
   validate_mesh(V, F, "normal filtering");
   if (F.rows() == 0) throw InvalidInput("normal filtering: the mesh has no faces");
-  const detail::Normalization norm = detail::normalization_for(V, F);
-  const Eigen::MatrixXd Vn = norm.apply(V);
   const Topology topo = build_topology(F, V.rows());
+  const detail::Normalization norm = detail::normalization_for(V, F, edge_lengths(V, topo).mean());
+  const Eigen::MatrixXd Vn = norm.apply(V);
   const Operators ops = build_operators(Vn, F, topo);
   const Eigen::Index nf = F.rows(), ne = topo.num_edges();
   const Eigen::VectorXd face_alpha = ones_or(weights.face_alpha, nf, "face_alpha");
@@ -126,30 +185,16 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
   const SparseMatrix GtL = ops.G.transpose() * ops.edge_lengths.asDiagonal();
   SparseMatrix A = o.penalty * (GtL * ops.G);
   A += SparseMatrix(fid_weight.asDiagonal());
-  Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> chol;
-  chol.compute(A);
-  if (chol.info() != Eigen::Success)
-    throw SolverError("normal filtering: Cholesky factorisation of the N-step matrix failed");
+  const detail::FixedCholesky chol(A, "normal filtering (N-step)");
   const Eigen::MatrixXd rhs0 = fid_weight.asDiagonal() * N0;
 
   // v-step matrix (eq. 23): L·diag(2γ w‖p‖ + β_e/(2ε)) + 2βε Dᵀ L_W D. Only the diagonal
-  // changes; keep the constant part and the positions of its diagonal entries.
-  SparseMatrix Kv = (2.0 * o.beta * o.epsilon) * SparseMatrix(ops.D.transpose() * ops.line_lengths.asDiagonal() * ops.D);
-  {
-    SparseMatrix I(ne, ne);
-    I.setIdentity();
-    Kv += 0.0 * I;  // make sure every diagonal entry is stored
-  }
-  Kv.makeCompressed();
-  std::vector<double*> diag(static_cast<size_t>(ne), nullptr);
-  for (Eigen::Index c = 0; c < Kv.outerSize(); ++c)
-    for (SparseMatrix::InnerIterator it(Kv, c); it; ++it)
-      if (it.row() == it.col()) diag[c] = &it.valueRef();
+  // changes between iterations. Dᵀ L_W D is assembled directly from the corner lines (each
+  // line l couples its entering and leaving edges), stored with explicit diagonal entries.
+  const SparseMatrix Kv = edge_smoothness_matrix(topo, ops.line_lengths, 2.0 * o.beta * o.epsilon);
   const Eigen::VectorXd Kv_diag = Kv.diagonal();
   const Eigen::VectorXd v_rhs = ops.edge_lengths.cwiseProduct(edge_beta) * (o.beta / (2 * o.epsilon));
-  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper, Eigen::DiagonalPreconditioner<double>> cg;
-  cg.setTolerance(1e-10);
-  cg.setMaxIterations(1000);
+  Eigen::VectorXd v_diag(ne);
 
   Eigen::MatrixXd N = N0;
   Eigen::MatrixXd p = Eigen::MatrixXd::Zero(ne, 3), lambda = Eigen::MatrixXd::Zero(ne, 3);
@@ -161,8 +206,7 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
   for (int k = 0; k < o.max_iterations; ++k) {
     // 1. N-step: (2αS + r GᵀLG) N = 2αS N⁰ + GᵀL (r p + λ), then project rows onto the sphere.
     const Eigen::MatrixXd rhs = rhs0 + GtL * (o.penalty * p + lambda);
-    Eigen::MatrixXd Nn = chol.solve(rhs);
-    if (chol.info() != Eigen::Success) throw SolverError("normal filtering: N-step solve failed");
+    Eigen::MatrixXd Nn = chol.solve(rhs, "normal filtering (N-step)");
     // The paper projects N onto the unit sphere after every N-step. That makes the splitting
     // inconsistent (p and λ then refer to another N than the linear N-step produces): for
     // α ≲ 1 or heavy noise the residual grows and the normals end up worse than the input
@@ -200,14 +244,11 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
     // 3. v-step (eq. 23) with the weights of this iteration and the new p; warm-started
     // Jacobi-preconditioned CG (the matrix is strongly diagonally dominant for small ε).
     for (Eigen::Index e = 0; e < ne; ++e)
-      *diag[e] = Kv_diag(e) + ops.edge_lengths(e) * (2 * o.gamma * w(e) * p_norm(e) +
+      v_diag(e) = Kv_diag(e) + ops.edge_lengths(e) * (2 * o.gamma * w(e) * p_norm(e) +
                                                      edge_beta(e) * o.beta / (2 * o.epsilon));
-    cg.compute(Kv);
-    Eigen::VectorXd vn = cg.solveWithGuess(v_rhs, v);
-    if (cg.info() != Eigen::Success && cg.error() > 1e-6)
-      throw SolverError("normal filtering: v-step conjugate gradient did not converge");
-    res.v_solver_iterations.push_back(static_cast<int>(cg.iterations()));
-    v = vn;
+    const int cg_iterations = solve_v_step(Kv, Kv_diag, v_diag, v_rhs, v);
+    if (cg_iterations < 0) throw SolverError("normal filtering: v-step conjugate gradient did not converge");
+    res.v_solver_iterations.push_back(cg_iterations);
     // 4. Multiplier (DESIGN.md step 4: λ += ν r (p − ∇N), the sign consistent with the N- and p-steps).
     const Eigen::MatrixXd r = p - gN;
     lambda += o.relaxation * o.penalty * r;
@@ -217,7 +258,7 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
     N = std::move(Nn);
     res.residual_history.push_back(weighted_norm(r, ops.edge_lengths));
     res.change_history.push_back(change);
-    res.energy_history.push_back(energy_normalised(ops, N, v, N0, o, face_alpha, edge_beta));
+    if (o.record_energy) res.energy_history.push_back(energy_normalised(ops, N, v, N0, o, face_alpha, edge_beta));
     res.iterations = k + 1;
     // IRLA weights for the next iteration from p^{k+1}.
     for (Eigen::Index e = 0; e < ne; ++e) w(e) = irla_weight(p_norm(e), o);

@@ -2,15 +2,16 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
-#include <Eigen/SparseCholesky>
 #include <cmath>
 #include <sstream>
 
 #include "msmesh/errors.h"
+#include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
 #include "msmesh/operators.h"
 #include "msmesh/topology.h"
 #include "normalize.h"
+#include "sparse_solve.h"
 
 namespace msmesh {
 
@@ -63,7 +64,7 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
     res.converged = true;
     return res;
   }
-  const detail::Normalization norm = detail::normalization_for(V, F);
+  const detail::Normalization norm = detail::normalization_for(V, F, edge_lengths(V, topo).mean());
   const Eigen::MatrixXd V0 = norm.apply(V);
 
   // K (3T×P): row 3i+k gives corner k of face i minus the face's mean (the centring matrix M).
@@ -96,10 +97,7 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
   if (o.omega2 > 0) A += o.omega2 * SparseMatrix(H.transpose() * H);
   // A tiny floor keeps vertices with ω₃ multiplier 0 and no face (isolated) well-posed.
   A += SparseMatrix(d3.cwiseMax(1e-10).asDiagonal());
-  Eigen::SimplicialLLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> chol;
-  chol.compute(A);
-  if (chol.info() != Eigen::Success)
-    throw SolverError("vertex update: Cholesky factorisation failed (is omega3 > 0?)");
+  const detail::FixedCholesky chol(A, "vertex update");
   const SparseMatrix Kt = o.omega1 * K.transpose();
   const Eigen::MatrixXd rhs0 = d3.asDiagonal() * V0;
 
@@ -130,8 +128,7 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
     }
     // V-step (eq. 27).
     const Eigen::MatrixXd rhs = Kt * P + rhs0;
-    Eigen::MatrixXd Xn = chol.solve(rhs);
-    if (chol.info() != Eigen::Success || !Xn.allFinite()) throw SolverError("vertex update: solve failed");
+    Eigen::MatrixXd Xn = chol.solve(rhs, "vertex update");
     const double change = std::sqrt((Xn - X).squaredNorm() / double(nv));
     X = std::move(Xn);
     res.change_history.push_back(change);

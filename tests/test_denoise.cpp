@@ -71,6 +71,7 @@ TEST(Denoise, ResidualRisesThenFallsAndEnergyDrops) {
   const NoisyCube c = noisy_cube(10, 0.3);
   NormalFilterOptions o = preset_options("cad").normals;
   o.tolerance = 0;
+  o.record_energy = true;
   const NormalFilterResult r = filter_normals(c.noisy, c.clean.F, o);
   ASSERT_EQ(r.iterations, o.max_iterations);
   const auto& h = r.residual_history;

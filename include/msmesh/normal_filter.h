@@ -29,6 +29,9 @@ struct NormalFilterOptions {
   /// Project N onto the unit sphere after every N-step (the paper's reading). false: solve the
   /// relaxed problem and project once at the end (stable ADMM; much better at heavy noise).
   bool project_each_iteration = false;
+  /// Record the energy (15) after every iteration in NormalFilterResult::energy_history
+  /// (costs one extra pass over the edges per iteration).
+  bool record_energy = false;
   /// Throws InvalidInput naming the parameter, its value and the valid range.
   void validate() const;
 };
@@ -46,7 +49,7 @@ struct NormalFilterResult {
   bool converged = false;  ///< stopped by the tolerance rather than max_iterations
   std::vector<double> residual_history;  ///< ‖p − ∇N‖_V per iteration (mean-edge units)
   std::vector<double> change_history;    ///< ‖N^{k+1} − N^k‖_U per iteration
-  std::vector<double> energy_history;    ///< energy (15) at (N^{k+1}, v^{k+1}) per iteration
+  std::vector<double> energy_history;    ///< energy (15) per iteration (when record_energy)
   std::vector<int> v_solver_iterations;  ///< CG iterations of each v-step
 };
 
