@@ -28,7 +28,7 @@ double mean_edge_length(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F);
 /// (zero rows for isolated vertices).
 Eigen::MatrixXd vertex_normals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F);
 
-/// Length of the diagonal of the axis-aligned bounding box of the referenced vertices.
+/// Length of the diagonal of the axis-aligned bounding box of all rows of V.
 double bounding_box_diagonal(const Eigen::MatrixXd& V);
 
 /// #E dihedral angle in radians between the normals of the two faces of each interior
