@@ -1,0 +1,178 @@
+// msmesh segment: piecewise-smooth segmentation from the NMSTV edge field (paper §6.3).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "command.h"
+#include "json.h"
+#include "msmesh/denoise.h"
+#include "msmesh/errors.h"
+#include "msmesh/io.h"
+#include "msmesh/segment.h"
+
+namespace msmesh::cli {
+namespace {
+
+struct Args {
+  std::string input, output, labels, parts, preset = "cad";
+  bool denoise_first = false, json = false, quiet = false, ascii = false, in_place = false;
+  double angle = 15.0, clamp = 0.001, min_area = -1;
+};
+
+// Distinct colours: hues stepped by the golden ratio, so neighbouring labels differ a lot.
+Eigen::Vector3d label_color(int label) {
+  const double h = std::fmod(0.11 + 0.618033988749895 * label, 1.0) * 6.0;
+  const double s = (label % 3 == 2) ? 0.45 : 0.7, v = (label % 2) ? 0.8 : 0.95;
+  const int i = static_cast<int>(h) % 6;
+  const double f = h - std::floor(h), p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
+  switch (i) {
+    case 0: return {v, t, p};
+    case 1: return {q, v, p};
+    case 2: return {p, v, t};
+    case 3: return {p, q, v};
+    case 4: return {t, p, v};
+    default: return {v, p, q};
+  }
+}
+
+// The faces of one segment as a mesh of their own, vertices re-indexed in order of use.
+Mesh extract_part(const Mesh& m, const Eigen::VectorXi& labels, int label) {
+  std::vector<int> map(m.V.rows(), -1), used;
+  std::vector<int> faces;
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    if (labels(f) == label) faces.push_back(static_cast<int>(f));
+  Mesh part;
+  part.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
+  for (size_t k = 0; k < faces.size(); ++k)
+    for (int c = 0; c < 3; ++c) {
+      int& to = map[m.F(faces[k], c)];
+      if (to < 0) {
+        to = static_cast<int>(used.size());
+        used.push_back(m.F(faces[k], c));
+      }
+      part.F(k, c) = to;
+    }
+  part.V.resize(static_cast<Eigen::Index>(used.size()), 3);
+  for (size_t i = 0; i < used.size(); ++i) part.V.row(i) = m.V.row(used[i]);
+  if (m.vertex_colors.rows() == m.V.rows()) {
+    part.vertex_colors.resize(part.V.rows(), 3);
+    for (size_t i = 0; i < used.size(); ++i) part.vertex_colors.row(i) = m.vertex_colors.row(used[i]);
+  }
+  if (m.uv.rows() == m.V.rows()) {
+    part.uv.resize(part.V.rows(), 2);
+    for (size_t i = 0; i < used.size(); ++i) part.uv.row(i) = m.uv.row(used[i]);
+  }
+  return part;
+}
+
+void run(const Args& a) {
+  if (mesh_format_from_path(a.output) != "ply")
+    throw InvalidInput("segment: the output '" + a.output + "' must be a .ply file (it carries one colour per face)");
+  check_not_overwriting_input(a.input, a.output, a.in_place);
+  if (!a.labels.empty()) check_not_overwriting_input(a.input, a.labels, a.in_place);
+  const auto t0 = std::chrono::steady_clock::now();
+  Mesh mesh = read_mesh(a.input);
+
+  const DenoiseOptions preset = preset_options(a.preset);
+  const ProgressCallback progress = make_progress_bar(a.quiet || a.json);
+  double seconds_denoise = 0;
+  if (a.denoise_first) {
+    const auto td = std::chrono::steady_clock::now();
+    mesh.V = denoise(mesh.V, mesh.F, preset, progress).V;
+    finish_progress_line();
+    seconds_denoise = std::chrono::duration<double>(std::chrono::steady_clock::now() - td).count();
+  }
+  SegmentOptions o;
+  o.normals = preset.normals;
+  o.smooth_angle_deg = a.angle;
+  o.clamp_probability = a.clamp;
+  if (a.min_area >= 0) o.min_area_fraction = a.min_area;
+  o.validate();
+  const auto ts = std::chrono::steady_clock::now();
+  const SegmentResult r = segment(mesh.V, mesh.F, o, progress);
+  finish_progress_line();
+  const double seconds_segment = std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count();
+
+  Eigen::MatrixXd colors(mesh.F.rows(), 3);
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) colors.row(f) = label_color(r.labels(f)).transpose();
+  write_ply_face_colors(a.output, mesh, colors, !a.ascii);
+  if (!a.labels.empty()) {
+    std::ostringstream os;
+    for (Eigen::Index f = 0; f < r.labels.size(); ++f) os << r.labels(f) << "\n";
+    write_text_file(a.labels, os.str());
+  }
+  std::vector<Eigen::Index> face_count(r.count, 0);
+  for (Eigen::Index f = 0; f < r.labels.size(); ++f) ++face_count[r.labels(f)];
+  if (!a.parts.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(a.parts, ec);
+    if (ec) throw IoError("cannot create the folder '" + a.parts + "': " + ec.message());
+    for (int s = 0; s < r.count; ++s) {
+      char name[32];
+      std::snprintf(name, sizeof name, "part_%03d.obj", s);
+      write_mesh((std::filesystem::path(a.parts) / name).string(), extract_part(mesh, r.labels, s));
+    }
+  }
+  const double total_area = r.areas.sum();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  if (a.json) {
+    Json j;
+    j.add("input", a.input).add("output", a.output).add("preset", a.preset).add("denoised", a.denoise_first);
+    j.add("faces", static_cast<long long>(mesh.F.rows())).add("segments", r.count)
+        .add("multicut_segments", r.multicut_count).add("objective", r.objective);
+    std::vector<Json> segs;
+    for (int s = 0; s < r.count; ++s) {
+      Json k;
+      k.add("label", s).add("faces", static_cast<long long>(face_count[s])).add("area", r.areas(s))
+          .add("area_fraction", total_area > 0 ? r.areas(s) / total_area : 0.0);
+      segs.push_back(k);
+    }
+    j.add("segment_list", segs);
+    j.add("normal_iterations", r.normal_report.iterations).add("seconds_denoise", seconds_denoise)
+        .add("seconds_segment", seconds_segment).add("seconds_total", seconds);
+    if (!a.labels.empty()) j.add("labels", a.labels);
+    if (!a.parts.empty()) j.add("parts", a.parts);
+    std::cout << j.str() << "\n";
+    return;
+  }
+  std::cout << "segmented " << a.input << " -> " << a.output << " (" << mesh.F.rows() << " faces"
+            << (a.denoise_first ? ", denoised first" : "") << ")\n";
+  std::cout << "  " << r.count << " segments";
+  if (r.multicut_count != r.count) std::cout << " (multicut " << r.multicut_count << ", small ones merged)";
+  std::cout << ", preset " << a.preset << ", " << fmt(seconds_segment, 3) << " s\n";
+  for (int s = 0; s < r.count; ++s)
+    std::cout << "  segment " << s << ": " << face_count[s] << " faces, area " << fmt(r.areas(s)) << " ("
+              << fmt(total_area > 0 ? 100 * r.areas(s) / total_area : 0.0, 3) << "%)\n";
+  if (!a.labels.empty()) std::cout << "  labels written to " << a.labels << "\n";
+  if (!a.parts.empty()) std::cout << "  " << r.count << " parts written to " << a.parts << "/part_NNN.obj\n";
+}
+
+const Registrar reg("segment", 70, [](CLI::App& app) {
+  auto a = std::make_shared<Args>();
+  CLI::App* c = app.add_subcommand("segment", "Segment a mesh into piecewise-smooth parts (NMSTV edge field + multicut)");
+  c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();
+  c->add_option("-o,--output", a->output, "Output .ply with one colour per segment on its faces")->required();
+  c->add_option("--labels", a->labels, "Write the segment label of each face (one per line, input order)");
+  c->add_option("--parts", a->parts, "Write each segment as a mesh DIR/part_NNN.obj (re-indexed)");
+  c->add_flag("--denoise", a->denoise_first, "Denoise first (msmesh denoise with the same preset), then segment");
+  c->add_option("--preset", a->preset, "Normal filter parameters: cad (sharp features) or smooth (organic)")
+      ->check(CLI::IsMember({"cad", "smooth"}))
+      ->capture_default_str();
+  c->add_option("--angle", a->angle, "Faces whose regularised normals are within this angle (degrees) never split")
+      ->capture_default_str();
+  c->add_option("--clamp", a->clamp, "Clamp split probabilities to [c, 1 - c]")->capture_default_str();
+  c->add_option("--min-area", a->min_area,
+                "Merge segments below this fraction of the total area into a neighbour (0: off; default 0.002)");
+  c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
+  c->add_flag("-q,--quiet", a->quiet, "No progress bar");
+  c->add_flag("--ascii", a->ascii, "Write the PLY as ascii instead of binary");
+  c->add_flag("--in-place", a->in_place, "Allow the output to overwrite the input file");
+  c->callback([a]() { run(*a); });
+});
+
+}  // namespace
+}  // namespace msmesh::cli
