@@ -11,6 +11,7 @@
 #include "msmesh/io.h"
 #include "msmesh/metrics.h"
 #include "msmesh/topology.h"
+#include "report.h"
 
 namespace msmesh::cli {
 namespace {
@@ -23,6 +24,7 @@ struct Args {
   double omega1 = 0, omega2 = 0, omega3 = 0;
   double sigma_r = 0, sigma_s = 0;
   int bilateral_iterations = 0;
+  std::string report;  // --report: HTML report (cli/report.h)
 };
 
 struct Overrides {
@@ -95,6 +97,8 @@ void run(const Args& a, const Overrides& ov) {
     ev_in = evaluate(mesh.V, mesh.F, truth.V, truth.F);
     ev_out = evaluate(out.V, out.F, truth.V, truth.F);
   }
+  if (!a.report.empty())
+    write_denoise_report(a.report, a.input, mesh, out.V, a.truth.empty() ? nullptr : &truth, a.method, preset, o, r);
 
   if (a.json) {
     Json j;
@@ -160,6 +164,7 @@ void run(const Args& a, const Overrides& ov) {
     line("result:", ev_out);
   }
   if (!a.field.empty()) std::cout << "  edge field v written to " << a.field << "\n";
+  if (!a.report.empty()) std::cout << "  report written to " << a.report << "\n";
 }
 
 const Registrar reg("denoise", 50, [](CLI::App& app) {
@@ -195,6 +200,7 @@ const Registrar reg("denoise", 50, [](CLI::App& app) {
   add("--bilateral-iterations", &a->bilateral_iterations, "bilateral: normal filtering passes (default 20)");
   c->add_option("--truth", a->truth, "Ground-truth mesh: print error figures of input and result");
   c->add_option("--save-field", a->field, "Write the edge field v (.txt: 'i j v' per edge; .ply: coloured edges)");
+  c->add_option("--report", a->report, "Write an HTML report: 3D viewer, parameters, errors, convergence plots");
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
   c->add_flag("-q,--quiet", a->quiet, "No progress bar");
   c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");

@@ -1,0 +1,91 @@
+// msmesh render: one mesh to a PNG picture (software rasteriser of msmesh/render.h).
+#include <iostream>
+#include <memory>
+
+#include "command.h"
+#include "msmesh/errors.h"
+#include "msmesh/io.h"
+#include "msmesh/metrics.h"
+#include "msmesh/render.h"
+#include "report.h"
+
+namespace msmesh::cli {
+namespace {
+
+struct Args {
+  std::string input, output, color = "none", truth, field, labels, view = "iso", size = "800x600";
+  bool perspective = false, quiet = false;
+  double feature_angle = 0, error_max = 0, line_width = 0;
+  int supersample = 2;
+};
+
+void run(const Args& a) {
+  const Mesh mesh = read_mesh(a.input);
+  RenderOptions ro;
+  std::tie(ro.width, ro.height) = parse_size(a.size);
+  ro.view = view_from_name(a.view);
+  ro.projection = a.perspective ? Projection::Perspective : Projection::Orthographic;
+  ro.supersample = a.supersample;
+  // Field and label lines carry the information: thicker than feature edges by default.
+  ro.line_width = a.line_width > 0 ? a.line_width : (a.color == "field" || a.color == "labels" ? 2.5 : 1.5);
+  ro.validate();
+
+  Coloring c;
+  if (a.color == "error") {
+    if (a.truth.empty()) throw InvalidInput("render: --color error needs --truth GT");
+    const Mesh truth = read_mesh(a.truth);
+    const NormalErrors e = normal_errors(mesh.V, mesh.F, truth.V, truth.F);
+    c = error_coloring(e.angle_rad * (180.0 / M_PI), a.error_max);
+  } else if (a.color == "field") {
+    if (a.field.empty()) throw InvalidInput("render: --color field needs --field FILE (from denoise --save-field)");
+    c = field_coloring(mesh.F, mesh.V.rows(), read_edge_field(a.field, build_topology(mesh.F, mesh.V.rows())));
+  } else if (a.color == "labels") {
+    if (a.labels.empty()) throw InvalidInput("render: --color labels needs --labels FILE (from segment --labels)");
+    c = label_coloring(mesh.F, mesh.V.rows(), read_face_labels(a.labels, mesh.F.rows()));
+  }
+  if (a.feature_angle > 0 && c.style.lines.rows() == 0) {
+    c.style.lines = sharp_edges(mesh.V, mesh.F, a.feature_angle);
+    c.style.line_colors = Eigen::RowVector3d(0.1, 0.1, 0.1);
+  }
+  const Image image = add_color_bar(render_mesh(mesh.V, mesh.F, c.style, ro), c);
+  write_png(a.output, image);
+  if (!a.quiet) {
+    std::cout << "rendered " << a.input << " -> " << a.output << " (" << image.width << "x" << image.height << ", view "
+              << a.view << (a.perspective ? ", perspective" : "") << ", colour " << a.color;
+    if (!c.summary.empty()) std::cout << ": " << c.summary;
+    std::cout << ")\n";
+  }
+}
+
+const Registrar reg("render", 90, [](CLI::App& app) {
+  auto a = std::make_shared<Args>();
+  CLI::App* c = app.add_subcommand("render", "Render a mesh to a PNG picture (flat shading, colour maps)");
+  c->add_option("input", a->input, "Mesh to render (obj, off, ply, stl)")->required();
+  c->add_option("-o,--output", a->output, "Output .png")->required();
+  c->add_option("--color", a->color,
+                "none (grey), field (edge field v as coloured edges, --field), error (angle to --truth per face), "
+                "labels (one colour per segment, --labels)")
+      ->check(CLI::IsMember({"none", "field", "error", "labels"}))
+      ->capture_default_str();
+  c->add_option("--truth", a->truth, "Ground truth (same faces) for --color error");
+  c->add_option("--field", a->field, "Edge field from denoise --save-field (.txt 'i j v' or .ply) for --color field");
+  c->add_option("--labels", a->labels, "One label per face (segment --labels) for --color labels");
+  c->add_option("--view", a->view, "iso, front, back, left, right, top or bottom (+y is up)")
+      ->check(CLI::IsMember(view_names()))
+      ->capture_default_str();
+  c->add_option("--size", a->size, "Picture size WxH in pixels (a colour bar adds a strip below)")->capture_default_str();
+  c->add_flag("--perspective", a->perspective, "Perspective camera (default orthographic)");
+  c->add_option("--feature-edges", a->feature_angle,
+                "Draw edges sharper than this dihedral angle (degrees) as thin dark lines (0: off)")
+      ->capture_default_str();
+  c->add_option("--error-max", a->error_max,
+                "Top of the error colour scale in degrees (default: 98th percentile, rounded up)");
+  c->add_option("--line-width", a->line_width, "Width of edge lines in pixels (default 2.5 for field and labels, else 1.5)");
+  c->add_option("--supersample", a->supersample, "Samples per pixel along each axis (1-4; anti-aliasing)")
+      ->capture_default_str();
+  c->add_flag("-q,--quiet", a->quiet, "Print nothing");
+  c->callback([a]() { run(*a); });
+});
+
+}  // namespace
+}  // namespace msmesh::cli
