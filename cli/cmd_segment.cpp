@@ -12,6 +12,7 @@
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/segment.h"
+#include "report.h"
 
 namespace msmesh::cli {
 namespace {
@@ -20,6 +21,7 @@ struct Args {
   std::string input, output, labels, parts, preset = "cad";
   bool denoise_first = false, json = false, quiet = false, ascii = false, in_place = false;
   double angle = 15.0, clamp = 0.001, min_area = -1;
+  std::string report;  // --report: HTML report (cli/report.h)
 };
 
 // Distinct colours: hues stepped by the golden ratio, so neighbouring labels differ a lot.
@@ -99,6 +101,7 @@ void run(const Args& a) {
   Eigen::MatrixXd colors(mesh.F.rows(), 3);
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) colors.row(f) = label_color(r.labels(f)).transpose();
   write_ply_face_colors(a.output, mesh, colors, !a.ascii);
+  if (!a.report.empty()) write_segment_report(a.report, a.input, mesh, o, r);
   if (!a.labels.empty()) {
     std::ostringstream os;
     for (Eigen::Index f = 0; f < r.labels.size(); ++f) os << r.labels(f) << "\n";
@@ -148,6 +151,7 @@ void run(const Args& a) {
     std::cout << "  segment " << s << ": " << face_count[s] << " faces, area " << fmt(r.areas(s)) << " ("
               << fmt(total_area > 0 ? 100 * r.areas(s) / total_area : 0.0, 3) << "%)\n";
   if (!a.labels.empty()) std::cout << "  labels written to " << a.labels << "\n";
+  if (!a.report.empty()) std::cout << "  report written to " << a.report << "\n";
   if (!a.parts.empty()) std::cout << "  " << r.count << " parts written to " << a.parts << "/part_NNN.obj\n";
 }
 
@@ -158,6 +162,7 @@ const Registrar reg("segment", 70, [](CLI::App& app) {
   c->add_option("-o,--output", a->output, "Output .ply with one colour per segment on its faces")->required();
   c->add_option("--labels", a->labels, "Write the segment label of each face (one per line, input order)");
   c->add_option("--parts", a->parts, "Write each segment as a mesh DIR/part_NNN.obj (re-indexed)");
+  c->add_option("--report", a->report, "Write an HTML report: 3D viewer of the segments and edge field, segment table");
   c->add_flag("--denoise", a->denoise_first, "Denoise first (msmesh denoise with the same preset), then segment");
   c->add_option("--preset", a->preset, "Normal filter parameters: cad (sharp features) or smooth (organic)")
       ->check(CLI::IsMember({"cad", "smooth"}))

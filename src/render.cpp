@@ -6,7 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
+#include <unordered_set>
 #include <Eigen/Geometry>
 
 #include "msmesh/errors.h"
@@ -223,19 +223,27 @@ Image render_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Mesh
   const Eigen::MatrixXd& frame = o.frame_points.rows() ? o.frame_points : used;
   const Projector proj = make_projector(frame, o);
 
-  // Lines: per face corner k, the colour of the edge opposite k (from F(f,k+1) to F(f,k+2)).
-  std::vector<std::array<int, 3>> face_line(nf, {-1, -1, -1});
+  // Screen positions of the vertices (samples; NaN behind a perspective eye).
+  std::vector<Eigen::Vector3d> S(static_cast<size_t>(V.rows()));
+  for (Eigen::Index i = 0; i < V.rows(); ++i) S[i] = proj.screen(V.row(i).transpose());
+
+  // Lines, by vertex: a face draws the lines at any of its corners, so that a line is
+  // continuous also where the faces along it meet it only at a vertex (there the face with the
+  // edge does not cover the whole half-width around the line).
+  std::vector<std::vector<int>> vertex_lines;
   if (nl > 0) {
-    std::unordered_map<std::uint64_t, std::vector<std::pair<Eigen::Index, int>>> corners;
-    corners.reserve(static_cast<size_t>(nf) * 2);
+    std::unordered_set<std::uint64_t> edges;
+    edges.reserve(static_cast<size_t>(nf) * 3);
     for (Eigen::Index f = 0; f < nf; ++f)
-      for (int k = 0; k < 3; ++k) corners[edge_key(F(f, (k + 1) % 3), F(f, (k + 2) % 3))].push_back({f, k});
+      for (int k = 0; k < 3; ++k) edges.insert(edge_key(F(f, k), F(f, (k + 1) % 3)));
+    vertex_lines.resize(static_cast<size_t>(V.rows()));
     for (Eigen::Index l = 0; l < nl; ++l) {
-      const auto it = corners.find(edge_key(style.lines(l, 0), style.lines(l, 1)));
-      if (it == corners.end())
-        throw InvalidInput("render: line " + std::to_string(l) + " (" + std::to_string(style.lines(l, 0)) + ", " +
-                           std::to_string(style.lines(l, 1)) + ") is not an edge of the mesh");
-      for (const auto& [f, k] : it->second) face_line[f][k] = static_cast<int>(l);
+      const int a = style.lines(l, 0), b = style.lines(l, 1);
+      if (a < 0 || b < 0 || a >= V.rows() || b >= V.rows() || !edges.count(edge_key(a, b)))
+        throw InvalidInput("render: line " + std::to_string(l) + " (" + std::to_string(a) + ", " + std::to_string(b) +
+                           ") is not an edge of the mesh");
+      vertex_lines[a].push_back(static_cast<int>(l));
+      vertex_lines[b].push_back(static_cast<int>(l));
     }
   }
   auto line_color = [&](int l) -> Eigen::Vector3f {
@@ -251,7 +259,7 @@ Image render_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Mesh
   for (Eigen::Index f = 0; f < nf; ++f) {
     const Eigen::Vector3d p0 = V.row(F(f, 0)).transpose(), p1 = V.row(F(f, 1)).transpose(),
                           p2 = V.row(F(f, 2)).transpose();
-    const Eigen::Vector3d s[3] = {proj.screen(p0), proj.screen(p1), proj.screen(p2)};
+    const Eigen::Vector3d s[3] = {S[F(f, 0)], S[F(f, 1)], S[F(f, 2)]};
     if (!s[0].allFinite() || !s[1].allFinite() || !s[2].allFinite()) continue;  // behind the eye (not clipped)
     // Twice the signed screen area; both orientations are drawn (faces are two-sided).
     const double area2 = (s[1].x() - s[0].x()) * (s[2].y() - s[0].y()) - (s[2].x() - s[0].x()) * (s[1].y() - s[0].y());
@@ -272,15 +280,14 @@ Image render_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Mesh
                                                           : o.base_color;
     const Eigen::Vector3f face_color = (base * shade).cwiseMin(1.0).cwiseMax(0.0).cast<float>();
 
-    // Edge lengths in samples (edge k is opposite corner k) for the distance-to-edge test.
-    double edge_len[3];
-    bool any_line = false;
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::Vector3d& a = s[(k + 1) % 3];
-      const Eigen::Vector3d& b = s[(k + 2) % 3];
-      edge_len[k] = std::hypot(b.x() - a.x(), b.y() - a.y());
-      any_line = any_line || face_line[f][k] >= 0;
-    }
+    // The lines this face may show: those at its corners (unique), as screen segments.
+    std::vector<int> lines_here;
+    if (nl > 0)
+      for (int k = 0; k < 3; ++k)
+        for (int l : vertex_lines[F(f, k)])
+          if (std::find(lines_here.begin(), lines_here.end(), l) == lines_here.end() &&
+              S[style.lines(l, 0)].allFinite() && S[style.lines(l, 1)].allFinite())
+            lines_here.push_back(l);
 
     const double xmin = std::min({s[0].x(), s[1].x(), s[2].x()}), xmax = std::max({s[0].x(), s[1].x(), s[2].x()});
     const double ymin = std::min({s[0].y(), s[1].y(), s[2].y()}), ymax = std::max({s[0].y(), s[1].y(), s[2].y()});
@@ -305,17 +312,18 @@ Image render_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Mesh
         if (!(q > depth[idx])) continue;
         depth[idx] = q;
         Eigen::Vector3f c = face_color;
-        if (any_line) {
-          // Distance (samples) to edge k = w_k · |2 area| / |edge k|; the nearest flagged edge wins.
-          const double w[3] = {w0, w1, w2};
-          double best = half_line;
-          for (int k = 0; k < 3; ++k) {
-            if (face_line[f][k] < 0 || !(edge_len[k] > 0)) continue;
-            const double dist = w[k] * std::abs(area2) / edge_len[k];
-            if (dist < best) {
-              best = dist;
-              c = line_color(face_line[f][k]);
-            }
+        // The nearest line within half the line width colours the sample (distance to the
+        // segment, in samples: round ends).
+        double best = half_line;
+        for (int l : lines_here) {
+          const Eigen::Vector3d& a = S[style.lines(l, 0)];
+          const Eigen::Vector3d& b = S[style.lines(l, 1)];
+          const double dx = b.x() - a.x(), dy = b.y() - a.y(), len2 = dx * dx + dy * dy;
+          const double t = len2 > 0 ? std::clamp(((px - a.x()) * dx + (py - a.y()) * dy) / len2, 0.0, 1.0) : 0.0;
+          const double dist = std::hypot(px - (a.x() + t * dx), py - (a.y() + t * dy));
+          if (dist < best) {
+            best = dist;
+            c = line_color(l);
           }
         }
         color[idx] = c;

@@ -118,8 +118,8 @@ def main():
         print(__doc__)
         return 2
     report, out_dir = os.path.abspath(sys.argv[1]), sys.argv[2]
-    chromium = os.environ.get("CHROMIUM") or shutil.which("chromium") or shutil.which("chromium-browser")
-    driver = os.environ.get("CHROMEDRIVER") or shutil.which("chromedriver")
+    chromium = shutil.which(os.environ.get("CHROMIUM", "chromium")) or shutil.which("chromium-browser")
+    driver = shutil.which(os.environ.get("CHROMEDRIVER", "chromedriver"))
     port = free_port()
     profile = tempfile.mkdtemp(prefix="msmesh-chromium-")
     log = open(os.path.join(out_dir, "chromedriver.log"), "w")

@@ -9,6 +9,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 msmesh=${1:?usage: run_browser_test.sh MSMESH_BINARY [WORK_DIR]}
+msmesh=$(cd "$(dirname "$msmesh")" && pwd)/$(basename "$msmesh")
 work=${2:-$(mktemp -d)}
 
 skip() {
@@ -28,5 +29,9 @@ cd "$work"
 "$msmesh" shape fandisk --resolution 10 -o clean.obj >/dev/null
 "$msmesh" noise clean.obj -o noisy.obj --sigma 0.3 --seed 7 >/dev/null
 "$msmesh" denoise noisy.obj -o denoised.obj --truth clean.obj --report report.html -q >/dev/null
-echo "report: $work/report.html ($(wc -c < report.html) bytes)"
-python3 "$here/check_report.py" report.html "$work"
+"$msmesh" segment clean.obj -o segments.ply --report segments.html -q >/dev/null
+for r in report segments; do
+  echo "== $r.html ($(wc -c < $r.html) bytes)"
+  mkdir -p "$work/$r"
+  python3 "$here/check_report.py" "$r.html" "$work/$r"
+done
