@@ -1,0 +1,89 @@
+// msmesh holes: punch holes (geodesic disks) into a mesh, for inpainting tests and benchmarks.
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "command.h"
+#include "json.h"
+#include "msmesh/errors.h"
+#include "msmesh/inpaint.h"
+#include "msmesh/io.h"
+
+namespace msmesh::cli {
+namespace {
+
+struct Args {
+  std::string input, output, map;
+  int count = 3;
+  double radius = 3;
+  long long seed = 1;
+  bool on_features = false, json = false, ascii = false, in_place = false;
+};
+
+void run(const Args& a) {
+  check_not_overwriting_input(a.input, a.output, a.in_place);
+  if (a.seed < 0) throw InvalidInput("holes: --seed must be >= 0");
+  const Mesh mesh = read_mesh(a.input);
+  const PunchResult r =
+      punch_holes(mesh.V, mesh.F, a.count, a.radius, static_cast<std::uint64_t>(a.seed), a.on_features);
+  Mesh out;
+  out.V = r.V;
+  out.F = r.F;
+  if (mesh.vertex_colors.rows() == mesh.V.rows() && mesh.V.rows() > 0) {
+    out.vertex_colors.resize(r.V.rows(), 3);
+    for (Eigen::Index i = 0; i < r.V.rows(); ++i) out.vertex_colors.row(i) = mesh.vertex_colors.row(r.vertex_map(i));
+  }
+  if (mesh.uv.rows() == mesh.V.rows() && mesh.V.rows() > 0) {
+    out.uv.resize(r.V.rows(), 2);
+    for (Eigen::Index i = 0; i < r.V.rows(); ++i) out.uv.row(i) = mesh.uv.row(r.vertex_map(i));
+  }
+  WriteOptions wo;
+  wo.binary = !a.ascii;
+  write_mesh(a.output, out, wo);
+  if (!a.map.empty()) {
+    std::ostringstream os;
+    os << "# input vertex index of each output vertex (one per line)\n";
+    for (Eigen::Index i = 0; i < r.vertex_map.size(); ++i) os << r.vertex_map(i) << "\n";
+    write_text_file(a.map, os.str());
+  }
+  if (a.json) {
+    Json j;
+    j.add("input", a.input).add("output", a.output).add("requested", a.count).add("punched", r.punched)
+        .add("radius", a.radius).add("seed", a.seed).add("on_features", a.on_features)
+        .add("removed_faces", static_cast<long long>(mesh.F.rows() - r.F.rows()))
+        .add("removed_vertices", static_cast<long long>(mesh.V.rows() - r.V.rows()));
+    std::vector<double> centers(r.centers.begin(), r.centers.end());
+    j.add("centers", centers);
+    std::cout << j.str() << "\n";
+    return;
+  }
+  std::cout << "punched " << r.punched << " of " << a.count << " holes (radius " << fmt(a.radius)
+            << " mean edge lengths" << (a.on_features ? ", on sharp features" : "") << ", seed " << a.seed << "): "
+            << a.input << " -> " << a.output << "\n";
+  std::cout << "  removed " << (mesh.F.rows() - r.F.rows()) << " faces and " << (mesh.V.rows() - r.V.rows())
+            << " vertices";
+  if (!a.map.empty()) std::cout << "; vertex index map written to " << a.map;
+  std::cout << "\n";
+  if (r.punched < a.count)
+    std::cout << "  note: no room for more holes (they are kept apart from each other and from boundaries)\n";
+}
+
+const Registrar reg("holes", 85, [](CLI::App& app) {
+  auto a = std::make_shared<Args>();
+  CLI::App* c = app.add_subcommand("holes", "Punch holes (geodesic disks) into a mesh, for inpainting tests");
+  c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();
+  c->add_option("-o,--output", a->output, "Output mesh with holes")->required();
+  c->add_option("--count", a->count, "Number of holes")->capture_default_str();
+  c->add_option("--radius", a->radius, "Hole radius in mean edge lengths (geodesic, along edges)")
+      ->capture_default_str();
+  c->add_option("--seed", a->seed, "Random seed (same seed, same holes)")->capture_default_str();
+  c->add_flag("--on-features", a->on_features, "Centre the holes on sharp edges and corners (dihedral > 60 deg)");
+  c->add_option("--map", a->map, "Write the input index of each output vertex to this text file");
+  c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
+  c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");
+  c->add_flag("--in-place", a->in_place, "Allow the output to overwrite the input file");
+  c->callback([a]() { run(*a); });
+});
+
+}  // namespace
+}  // namespace msmesh::cli

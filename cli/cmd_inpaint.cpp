@@ -1,0 +1,293 @@
+// msmesh inpaint: fill the holes of a mesh (CGAL fill-and-fair) and recover their sharp
+// features with NMSTV normal filtering + vertex updating (paper §6.2).
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "command.h"
+#include "json.h"
+#include "msmesh/errors.h"
+#include "msmesh/inpaint.h"
+#include "msmesh/io.h"
+
+namespace msmesh::cli {
+namespace {
+
+struct Args {
+  std::string input, output, truth;
+  int max_hole_edges = 0, free_ring = 0;
+  double max_hole_diameter = 0;
+  std::vector<int> holes;
+  bool list = false, no_features = false, fill_outer = false, all_featured = false, no_flips = false, no_placement = false, no_smoothing = false, json = false, quiet = false, in_place = false,
+       ascii = false;
+  // Tuning (hidden group): parameters of the feature recovery.
+  double alpha = 0, beta = 0, gamma = 0, rho = 0, omega2 = 0, omega3 = 0;
+  double jump_angle = 0, placement_smoothing = 0, density = 0, outside_alpha = 0, inside_alpha = 0, inside_beta = 0, inside_omega3 = 0;
+  int project = 1, rounds = 0, context_rings = 0, normal_iterations = 0, vertex_iterations = 0;
+};
+
+struct Given {
+  std::map<std::string, CLI::Option*> opts;
+  bool operator()(const std::string& name) const {
+    auto it = opts.find(name);
+    return it != opts.end() && it->second->count() > 0;
+  }
+};
+
+const char* action_name(HoleAction a) {
+  switch (a) {
+    case HoleAction::Filled: return "filled";
+    case HoleAction::Skipped: return "skipped";
+    case HoleAction::Failed: return "failed";
+  }
+  return "?";
+}
+
+std::string hole_note(const Hole& h) {
+  if (!h.simple) return "boundary touches itself at vertex " + std::to_string(h.touching_vertex);
+  if (h.outer_boundary) return "outer boundary (not filled unless listed)";
+  return "";
+}
+
+Json hole_json(int i, const Hole& h) {
+  Json j;
+  j.add("index", i).add("edges", h.edges).add("diameter", h.diameter).add("length", h.length)
+      .add("component", h.component).add("outer_boundary", h.outer_boundary).add("simple", h.simple);
+  if (!h.simple) j.add("touching_vertex", h.touching_vertex);
+  return j;
+}
+
+void list_holes(const Args& a) {
+  const Mesh mesh = read_mesh(a.input);
+  const std::vector<Hole> holes = find_holes(mesh.V, mesh.F);
+  if (a.json) {
+    std::vector<Json> hs;
+    for (size_t i = 0; i < holes.size(); ++i) hs.push_back(hole_json(static_cast<int>(i), holes[i]));
+    Json j;
+    j.add("input", a.input).add("holes", hs);
+    std::cout << j.str() << "\n";
+    return;
+  }
+  if (holes.empty()) {
+    std::cout << a.input << ": no holes (no boundary edges)\n";
+    return;
+  }
+  std::cout << a.input << ": " << holes.size() << " boundary loop" << (holes.size() == 1 ? "" : "s")
+            << " (diameter in mean edge lengths)\n";
+  std::cout << "  index  edges  diameter  note\n";
+  for (size_t i = 0; i < holes.size(); ++i) {
+    char line[96];
+    std::snprintf(line, sizeof line, "  %5zu  %5d  %8.2f  ", i, holes[i].edges, holes[i].diameter);
+    std::cout << line << hole_note(holes[i]) << "\n";
+  }
+}
+
+Json errors_json(const InpaintErrors& e) {
+  Json k;
+  k.add("points", static_cast<long long>(e.points)).add("max_e3", e.max * 1e3).add("mean_e3", e.mean * 1e3)
+      .add("rms_e3", e.rms * 1e3).add("new_faces", static_cast<long long>(e.new_faces))
+      .add("new_face_normal_error_deg", e.mean_normal_error_deg);
+  return k;
+}
+
+void run(const Args& a, const Given& given) {
+  if (a.list) {
+    list_holes(a);
+    return;
+  }
+  if (a.output.empty()) throw InvalidInput("inpaint: --output is required (or --list to only list the holes)");
+  check_not_overwriting_input(a.input, a.output, a.in_place);
+  const Mesh mesh = read_mesh(a.input);
+  Mesh truth;
+  if (!a.truth.empty()) truth = read_mesh(a.truth);
+
+  InpaintOptions o;
+  o.max_hole_edges = a.max_hole_edges;
+  o.max_hole_diameter = a.max_hole_diameter;
+  o.holes = a.holes;
+  o.fill_outer_boundary = a.fill_outer;
+  o.recover_features = !a.no_features;
+  o.free_ring = a.free_ring;
+  o.all_holes_featured = a.all_featured;
+  o.crease_flips = !a.no_flips;
+  o.orthogonal_placement = !a.no_placement;
+  o.smooth_normals = !a.no_smoothing;
+  if (given("--jump-angle")) o.smooth_jump_angle = a.jump_angle;
+  if (given("--placement-smoothing")) o.placement_smoothing = a.placement_smoothing;
+  if (given("--alpha")) o.normals.alpha = a.alpha;
+  if (given("--beta")) o.normals.beta = a.beta;
+  if (given("--gamma")) o.normals.gamma = a.gamma;
+  if (given("--rho")) o.normals.rho = a.rho;
+  if (given("--normal-iterations")) o.normals.max_iterations = a.normal_iterations;
+  if (given("--project-each-iteration")) o.normals.project_each_iteration = a.project != 0;
+  if (given("--omega2")) o.vertices.omega2 = a.omega2;
+  if (given("--omega3")) o.vertices.omega3 = a.omega3;
+  if (given("--vertex-iterations")) o.vertices.max_iterations = a.vertex_iterations;
+  if (given("--outside-alpha")) o.outside_alpha = a.outside_alpha;
+  if (given("--inside-alpha")) o.inside_alpha = a.inside_alpha;
+  if (given("--inside-beta")) o.inside_beta = a.inside_beta;
+  if (given("--inside-omega3")) o.inside_omega3 = a.inside_omega3;
+  if (given("--rounds")) o.rounds = a.rounds;
+  if (given("--density")) o.density = a.density;
+  if (given("--context-rings")) o.context_rings = a.context_rings;
+  o.validate();
+
+  const InpaintResult r = inpaint(mesh.V, mesh.F, o, make_progress_bar(a.quiet || a.json));
+  finish_progress_line();
+
+  Mesh out;
+  out.V = r.V;
+  out.F = r.F;
+  const Eigen::Index added = r.V.rows() - mesh.V.rows();
+  if (mesh.vertex_colors.rows() == mesh.V.rows() && mesh.V.rows() > 0) {
+    // New vertices take the mean colour; texture coordinates cannot be invented, so they are
+    // kept only when no vertex was added.
+    out.vertex_colors.resize(r.V.rows(), 3);
+    out.vertex_colors.topRows(mesh.V.rows()) = mesh.vertex_colors;
+    if (added > 0) out.vertex_colors.bottomRows(added).rowwise() = mesh.vertex_colors.colwise().mean();
+  }
+  if (added == 0) out.uv = mesh.uv;
+  WriteOptions wo;
+  wo.binary = !a.ascii;
+  write_mesh(a.output, out, wo);
+
+  InpaintErrors err;
+  if (!a.truth.empty()) err = inpaint_errors(mesh.V, mesh.F, r.V, r.F, r.new_faces, truth.V, truth.F);
+
+  if (a.json) {
+    Json j;
+    j.add("input", a.input).add("output", a.output).add("features", o.recover_features);
+    j.add("vertices", static_cast<long long>(mesh.V.rows())).add("faces", static_cast<long long>(mesh.F.rows()));
+    j.add("holes_found", static_cast<int>(r.holes.size())).add("filled", r.filled).add("skipped", r.skipped)
+        .add("failed", r.failed).add("featured", r.featured);
+    j.add("new_vertices", static_cast<long long>(added))
+        .add("new_faces", static_cast<long long>(r.F.rows() - mesh.F.rows()))
+        .add("moved_input_vertices", r.moved_input_vertices).add("crease_flips", r.crease_flips);
+    std::vector<Json> hs;
+    for (size_t i = 0; i < r.holes.size(); ++i) {
+      Json h = hole_json(static_cast<int>(i), r.holes[i]);
+      const HoleReport& rep = r.reports[i];
+      h.add("action", action_name(rep.action));
+      if (!rep.reason.empty()) h.add("reason", rep.reason);
+      if (rep.action == HoleAction::Filled)
+        h.add("new_faces", rep.new_faces).add("new_vertices", rep.new_vertices).add("faired", rep.faired)
+            .add("features", rep.features).add("crease_test", rep.features_reason);
+      hs.push_back(h);
+    }
+    j.add("holes", hs);
+    Json params;
+    params.add("alpha", o.normals.alpha).add("beta", o.normals.beta).add("gamma", o.normals.gamma)
+        .add("rho", o.normals.rho).add("omega2", o.vertices.omega2).add("omega3", o.vertices.omega3)
+        .add("outside_alpha", o.outside_alpha).add("inside_alpha", o.inside_alpha).add("inside_beta", o.inside_beta)
+        .add("inside_omega3", o.inside_omega3).add("rounds", o.rounds).add("free_ring", o.free_ring);
+    j.add("parameters", params);
+    j.add("seconds_fill", r.seconds_fill).add("seconds_features", r.seconds_features);
+    if (!a.truth.empty()) j.add("truth", a.truth).add("errors", errors_json(err));
+    std::cout << j.str() << "\n";
+    return;
+  }
+
+  if (r.holes.empty()) {
+    std::cout << a.input << " has no holes: " << a.output << " is the input mesh unchanged ("
+              << mesh.V.rows() << " vertices, " << mesh.F.rows() << " faces)\n";
+    return;
+  }
+  if (!a.quiet) {
+    for (size_t i = 0; i < r.holes.size(); ++i) {
+      const Hole& h = r.holes[i];
+      const HoleReport& rep = r.reports[i];
+      std::cout << "  hole " << i << " (" << h.edges << " edges, diameter " << fmt(h.diameter, 3) << "): "
+                << action_name(rep.action);
+      if (rep.action == HoleAction::Filled) {
+        std::cout << ", " << rep.new_faces << " faces, " << rep.new_vertices << " vertices";
+        if (!rep.faired) std::cout << " (CGAL fairing failed: patch kept unfaired)";
+        if (o.recover_features)
+          std::cout << (rep.features ? "; features recovered (" : "; smooth, CGAL's fair patch kept (")
+                    << rep.features_reason << ")";
+      } else {
+        std::cout << ": " << rep.reason;
+      }
+      std::cout << "\n";
+    }
+  }
+  std::cout << "inpainted " << a.input << " -> " << a.output << ": " << r.filled << " of " << r.holes.size()
+            << " holes filled";
+  if (r.skipped) std::cout << ", " << r.skipped << " skipped";
+  if (r.failed) std::cout << ", " << r.failed << " failed";
+  std::cout << "; " << added << " vertices and " << (r.F.rows() - mesh.F.rows()) << " faces added\n";
+  std::cout << "  fill " << fmt(r.seconds_fill, 3) << " s";
+  if (o.recover_features && r.filled > 0)
+    std::cout << ", feature recovery " << fmt(r.seconds_features, 3) << " s (" << r.featured << " holes, "
+              << o.rounds << " rounds, "
+              << (o.free_ring ? std::to_string(r.moved_input_vertices) + " input vertices freed"
+                              : std::string("input vertices unchanged"))
+              << ")";
+  else if (!o.recover_features)
+    std::cout << " (CGAL fill-and-fair only)";
+  std::cout << "\n";
+  if (!a.truth.empty())
+    std::cout << "  filled region vs truth: max/mean/RMS " << fmt(err.max * 1e3) << "/" << fmt(err.mean * 1e3) << "/"
+              << fmt(err.rms * 1e3) << " e-3 of bbox diagonal (" << err.points << " points), new-face normal error "
+              << fmt(err.mean_normal_error_deg) << " deg\n";
+}
+
+const Registrar reg("inpaint", 80, [](CLI::App& app) {
+  auto a = std::make_shared<Args>();
+  auto given = std::make_shared<Given>();
+  CLI::App* c = app.add_subcommand(
+      "inpaint", "Fill holes (CGAL fill-and-fair) and recover their sharp features with NMSTV (paper 6.2)");
+  c->add_option("input", a->input, "Input mesh with holes (obj, off, ply, stl)")->required();
+  c->add_option("-o,--output", a->output, "Output mesh; format from the extension");
+  c->add_option("--max-hole-edges", a->max_hole_edges, "Skip holes with more boundary edges (0: no limit)")
+      ->capture_default_str();
+  c->add_option("--max-hole-diameter", a->max_hole_diameter,
+                "Skip holes wider than this many mean edge lengths (0: no limit)")
+      ->capture_default_str();
+  c->add_option("--holes", a->holes, "Fill exactly these holes (indices from --list), e.g. 0,2,5")->delimiter(',');
+  c->add_flag("--fill-outer", a->fill_outer, "Also fill the outer boundary of an open surface");
+  c->add_flag("--list", a->list, "Print the holes (index, edges, diameter) and exit");
+  c->add_option("--free-ring", a->free_ring,
+                "Let K rings of input vertices around each hole move (0: input vertices stay exactly)")
+      ->capture_default_str();
+  c->add_flag("--no-features", a->no_features, "CGAL fill-and-fair only (no feature recovery)");
+  c->add_flag("--all-holes-features", a->all_featured,
+              "Recover features in every filled hole (default: only where a crease runs into the hole)");
+  c->add_option("--truth", a->truth, "Ground-truth mesh: print the filled region's distance errors");
+  auto add = [&](const std::string& name, auto* target, const std::string& help) {
+    given->opts[name] = c->add_option(name, *target, help)->group("Tuning (defaults in docs/inpainting.md)");
+  };
+  add("--alpha", &a->alpha, "alpha > 0 of the normal filtering (default 2)");
+  add("--beta", &a->beta, "beta > 0 (default 0.02)");
+  add("--gamma", &a->gamma, "gamma > 0 (default 0.5)");
+  add("--rho", &a->rho, "rho > 0 (default 0.1)");
+  add("--normal-iterations", &a->normal_iterations, "normal filtering iterations (default 30)");
+  add("--project-each-iteration", &a->project, "1: project normals after every N-step (default), 0: once at the end");
+  add("--omega2", &a->omega2, "omega2 >= 0 of the vertex update (default 0)");
+  add("--omega3", &a->omega3, "omega3 > 0 of the vertex update (default 0.1)");
+  add("--vertex-iterations", &a->vertex_iterations, "vertex update iterations (default 60)");
+  add("--outside-alpha", &a->outside_alpha, "alpha multiplier on input faces (default 100)");
+  add("--inside-alpha", &a->inside_alpha, "alpha multiplier on new faces (default 1e-6)");
+  add("--inside-beta", &a->inside_beta, "beta multiplier on edges of new faces (default 0.1)");
+  add("--inside-omega3", &a->inside_omega3, "omega3 multiplier on new vertices (default 1e-4)");
+  add("--density", &a->density, "CGAL density_control_factor of the fill (default: sqrt 2 with --no-features, 2 otherwise)");
+  add("--rounds", &a->rounds, "rounds of normal filtering + vertex update (default 2)");
+  add("--context-rings", &a->context_rings, "rings of input faces around each hole in the solves (default 6)");
+  c->add_flag("--no-smoothing", a->no_smoothing, "Use NMSTV's normals as they are (no piecewise-smooth completion)")
+      ->group("Tuning (defaults in docs/inpainting.md)");
+  c->add_flag("--no-placement", a->no_placement, "Start the vertex update from the fill, not the orthogonal placement")
+      ->group("Tuning (defaults in docs/inpainting.md)");
+  add("--jump-angle", &a->jump_angle,
+      "normals further apart than this (deg) form the edge set; smooth elsewhere (default 0: per hole)");
+  add("--placement-smoothing", &a->placement_smoothing, "membrane weight of the orthogonal placement (default 1e-3)");
+  c->add_flag("--no-crease-flips", a->no_flips, "Do not flip edges of new faces towards the creases")
+      ->group("Tuning (defaults in docs/inpainting.md)");
+  c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
+  c->add_flag("-q,--quiet", a->quiet, "No progress bar and no per-hole lines");
+  c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");
+  c->add_flag("--in-place", a->in_place, "Allow the output to overwrite the input file");
+  c->callback([a, given]() { run(*a, *given); });
+});
+
+}  // namespace
+}  // namespace msmesh::cli

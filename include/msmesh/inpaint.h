@@ -1,0 +1,220 @@
+// Inpainting (paper §6.2, DESIGN.md §"Applications"): find the holes of a mesh, fill their
+// topology with CGAL's triangulate_refine_and_fair_hole (Liepa 2003), then recover the
+// missing features with NMSTV normal filtering and vertex updating, with large fidelity
+// (α, ω₃) outside the filled region, almost none inside, and β/10 inside.
+//
+// Also here: a hole puncher for tests and benchmarks, and the error figures of an inpainting
+// result against a ground truth.
+#pragma once
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "msmesh/normal_filter.h"
+#include "msmesh/progress.h"
+#include "msmesh/vertex_update.h"
+
+namespace msmesh {
+
+// ---------------------------------------------------------------------------------------
+// Hole finding
+// ---------------------------------------------------------------------------------------
+
+/// One boundary loop of a mesh.
+struct Hole {
+  /// The boundary vertices in order, walking each boundary edge opposite to the direction in
+  /// which its face walks it (so the hole lies to the left seen from outside). For a boundary
+  /// that touches itself the walk visits the touching vertices more than once.
+  std::vector<int> loop;
+  int edges = 0;          ///< number of boundary edges
+  double diameter = 0;    ///< largest distance between two loop vertices, in mean edge lengths
+  double length = 0;      ///< sum of the boundary edge lengths, in mean edge lengths
+  /// Area the loop spans, in squared mean edge lengths: the norm of its vector area
+  /// ½ Σ p_k × p_{k+1} (exact for a planar loop, the projected area of a bent one).
+  double spanned_area = 0;
+  int component = 0;      ///< connected component of faces it borders
+  /// The outer boundary of an open surface (see find_holes): never filled unless asked.
+  bool outer_boundary = false;
+  /// False when the boundary touches itself: some vertex has more than two boundary edges.
+  bool simple = true;
+  int touching_vertex = -1;  ///< a vertex where a non-simple boundary touches itself
+};
+
+/// The boundary loops of (V, F) (#V by 3, #F by 3), in a deterministic order (by smallest
+/// vertex index). Edges with exactly one incident face are boundary edges; non-manifold edges
+/// (three or more faces) are not.
+///
+/// Outer-boundary rule: within each connected component of faces, the boundary loop with the
+/// largest diameter (ties: more edges) is the component's outer boundary — the rim of an open
+/// scan or sheet — when the area it spans is at least a quarter of the component's surface
+/// area. A flat sheet's rim spans all of it, a hemispherical scan's rim half; a hole in a
+/// closed surface spans a small part of what surrounds it (a cube missing one whole face: 1/5).
+std::vector<Hole> find_holes(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F);
+
+// ---------------------------------------------------------------------------------------
+// Inpainting
+// ---------------------------------------------------------------------------------------
+
+struct InpaintOptions {
+  // --- which holes ---
+  int max_hole_edges = 0;        ///< skip holes with more boundary edges (0: no limit)
+  double max_hole_diameter = 0;  ///< skip holes wider than this many mean edge lengths (0: no limit)
+  /// Fill exactly these holes (indices into find_holes()), outer boundaries included and
+  /// regardless of the limits above. Empty: every hole within the limits except outer boundaries.
+  std::vector<int> holes;
+  bool fill_outer_boundary = false;  ///< also fill outer boundaries (within the limits)
+
+  // --- fill ---
+  /// CGAL's density_control_factor of the patch refinement (larger: denser). 0: automatic —
+  /// CGAL's default √2 without feature recovery, `feature_density` with it (a crease can only be
+  /// rebuilt where the patch has vertices to put on it).
+  double density = 0;
+  double feature_density = 2.0;
+
+  // --- feature recovery ---
+  bool recover_features = true;  ///< false: CGAL's fill-and-fair only
+  /// Feature recovery runs on the holes a crease runs into: at least two input edges at the
+  /// hole's boundary vertices sharper than feature_angle (degrees), and the median dihedral
+  /// angle of the other edges there below smooth_angle (the sharp edges separate smooth
+  /// patches). Other holes keep CGAL's fair patch, the better answer on smooth surfaces.
+  double feature_angle = 60;
+  double smooth_angle = 5;
+  bool all_holes_featured = false;  ///< recover features in every filled hole regardless
+  /// Rings of input vertices around each filled hole that may move (0: every input vertex stays
+  /// exactly where it was). Ring 1 is the hole's boundary, ring k the vertices k−1 edges from it.
+  int free_ring = 0;
+  /// Normal filtering parameters (Algorithm 1) used around the holes. Defaults: the "cad"
+  /// setting tuned on bench/inpaint (α = 2, β = 0.02, γ = 0.5, ρ = 0.1, per-iteration projection) — see docs/inpainting.md.
+  NormalFilterOptions normals = default_normal_options();
+  /// Vertex update parameters (Algorithm 2) used around the holes.
+  VertexUpdateOptions vertices = default_vertex_options();
+  double outside_alpha = 100;   ///< α multiplier on input faces (the fidelity that keeps them)
+  double inside_alpha = 1e-6;   ///< α multiplier on new faces (their initial normals mean nothing)
+  double inside_beta = 0.1;     ///< β multiplier on edges of new faces (paper: β/10 inside)
+  double inside_omega3 = 1e-4;  ///< ω₃ multiplier on new vertices ("very small")
+  double ring_omega3 = 1;       ///< ω₃ multiplier on freed input vertices (free_ring > 0)
+  /// ω₃ multiplier on pinned input vertices: makes them (numerically) fixed in the solve; their
+  /// exact input positions are copied back afterwards.
+  double pinned_omega3 = 1e8;
+  /// Rings of input faces around each hole included in the solves (the rest of the mesh is
+  /// pinned and far away, so it cannot change the result; this keeps the cost per hole).
+  int context_rings = 6;
+  /// Mumford–Shah smoothing of the filtered normals of the new faces: keep NMSTV's edge set
+  /// (neighbouring normals more than the jump angle apart) and interpolate the normals
+  /// harmonically elsewhere, so curved surfaces are not flattened into facets.
+  bool smooth_normals = true;
+  /// Jump angle in degrees; 0: per hole, 0.75 × the gentlest crease (dihedral > 30°) at its
+  /// boundary, kept within [20°, 60°] — a crease of the input survives, the small steps of
+  /// NMSTV's staircase on a curved surface do not.
+  double smooth_jump_angle = 0;
+  /// Before each vertex update, place the free vertices by one convex solve that makes the
+  /// edges of their faces orthogonal to the filtered normals (plus a small membrane term of
+  /// weight placement_smoothing, mean-edge units); Algorithm 2 then starts from there.
+  bool orthogonal_placement = true;
+  double placement_smoothing = 1e-3;
+  /// After each round, flip edges between new faces where the flipped pair matches the
+  /// filtered normals clearly better (a crease can only be rebuilt along edges; the fill's
+  /// triangulation may have faces spanning it). Only new faces change.
+  bool crease_flips = true;
+  /// Alternate normal filtering and vertex update this many times (the normals of the new
+  /// faces are recomputed from the updated positions before the next round).
+  int rounds = 2;
+
+  static NormalFilterOptions default_normal_options();
+  static VertexUpdateOptions default_vertex_options();
+  /// Throws InvalidInput naming the bad parameter.
+  void validate() const;
+};
+
+enum class HoleAction {
+  Filled,   ///< filled (and its features recovered when asked)
+  Skipped,  ///< not selected: outer boundary, over a limit, not listed, or self-touching
+  Failed,   ///< selected but CGAL could not fill it; left open
+};
+
+/// What was done with one hole of find_holes().
+struct HoleReport {
+  int index = 0;  ///< index into InpaintResult::holes
+  HoleAction action = HoleAction::Skipped;
+  std::string reason;      ///< why it was skipped or failed; empty when filled
+  int new_faces = 0, new_vertices = 0;
+  bool faired = false;     ///< CGAL's fairing succeeded (a filled but unfaired patch is kept)
+  bool features = false;   ///< the feature recovery ran on this hole
+  std::string features_reason;  ///< what the crease test saw (filled holes, recover_features)
+};
+
+struct InpaintResult {
+  /// #V' by 3: the input vertices first (identical bit for bit unless free_ring > 0 freed
+  /// some), then the new vertices.
+  Eigen::MatrixXd V;
+  /// #F' by 3: the input faces first, in order, then the new faces.
+  Eigen::MatrixXi F;
+  std::vector<bool> new_faces;     ///< #F' flags: face added by the fill
+  std::vector<bool> new_vertices;  ///< #V' flags: vertex added by the fill
+  std::vector<Hole> holes;         ///< every hole found, as find_holes() returns them
+  std::vector<HoleReport> reports; ///< one per hole, same order
+  int filled = 0, skipped = 0, failed = 0;
+  int featured = 0;                ///< filled holes the feature recovery ran on
+  int moved_input_vertices = 0;    ///< input vertices freed by free_ring
+  int crease_flips = 0;            ///< edge flips made by the feature recovery
+  NormalFilterResult normal_report;  ///< last round (empty when nothing was solved)
+  VertexUpdateResult vertex_report;  ///< last round
+  double seconds_fill = 0, seconds_features = 0;
+};
+
+/// Inpaints (V, F) (#V by 3, #F by 3). A mesh without holes comes back unchanged. Failures of
+/// single holes are reported, not thrown. Throws InvalidInput (bad mesh or options),
+/// SolverError, or Cancelled when `progress` returns false.
+InpaintResult inpaint(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const InpaintOptions& options = {},
+                      const ProgressCallback& progress = {});
+
+// ---------------------------------------------------------------------------------------
+// Error figures against a ground truth
+// ---------------------------------------------------------------------------------------
+
+/// Distances of the filled region to the ground truth, relative to the truth's bounding-box
+/// diagonal. Two sets of points count, with t = 0.1 mean edge length of the input:
+///  - truth vertices farther than t from every input vertex (the missing surface): their
+///    distance to the result's surface;
+///  - result vertices farther than t from every input vertex (the new surface): their
+///    distance to the truth's surface.
+struct InpaintErrors {
+  Eigen::Index points = 0;   ///< number of distances measured (both sets)
+  double max = 0, mean = 0, rms = 0;
+  Eigen::Index new_faces = 0;
+  /// Mean angle (degrees) between each new face's normal and the normal of the truth face
+  /// closest to its barycentre; 0 when there are no new faces.
+  double mean_normal_error_deg = 0;
+};
+
+/// new_faces: #F_result flags of the faces the inpainting added (empty: the faces beyond the
+/// input's #F). Throws InvalidInput for invalid meshes or a truth without faces.
+InpaintErrors inpaint_errors(const Eigen::MatrixXd& V_input, const Eigen::MatrixXi& F_input,
+                             const Eigen::MatrixXd& V_result, const Eigen::MatrixXi& F_result,
+                             const std::vector<bool>& new_faces, const Eigen::MatrixXd& V_truth,
+                             const Eigen::MatrixXi& F_truth);
+
+// ---------------------------------------------------------------------------------------
+// Hole puncher (tests, benchmarks)
+// ---------------------------------------------------------------------------------------
+
+struct PunchResult {
+  Eigen::MatrixXd V;   ///< #V' by 3 the remaining vertices (unreferenced ones removed)
+  Eigen::MatrixXi F;   ///< #F' by 3 the remaining faces, in their input order, re-indexed
+  Eigen::VectorXi vertex_map;      ///< #V' : input row of each output vertex
+  Eigen::VectorXi old_to_new;      ///< #V  : output row of each input vertex, -1 when removed
+  std::vector<int> centers;        ///< input vertex at the centre of each hole punched
+  int punched = 0;                 ///< holes made (fewer than asked when no room was left)
+};
+
+/// Punches `count` holes into (V, F): geodesic disks (Dijkstra along edges) of `radius` mean
+/// edge lengths around random centre vertices (seeded, deterministic). Every face touching a
+/// disk vertex is removed. Disks are grown where needed so that each hole's boundary is a
+/// simple loop, and kept apart from each other and from existing boundaries. With
+/// `on_features`, centres are vertices on sharp edges (dihedral angle > 60°), corners included.
+/// Throws InvalidInput for bad arguments.
+PunchResult punch_holes(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, int count, double radius,
+                        std::uint64_t seed, bool on_features = false);
+
+}  // namespace msmesh
