@@ -217,12 +217,14 @@ void run(const Args& a, const Given& given) {
   if (r.failed) std::cout << ", " << r.failed << " failed";
   std::cout << "; " << added << " vertices and " << (r.F.rows() - mesh.F.rows()) << " faces added\n";
   std::cout << "  fill " << fmt(r.seconds_fill, 3) << " s";
-  if (o.recover_features && r.filled > 0)
-    std::cout << ", feature recovery " << fmt(r.seconds_features, 3) << " s (" << r.featured << " holes, "
-              << o.rounds << " rounds, "
+  if (o.recover_features && r.featured > 0)
+    std::cout << ", feature recovery " << fmt(r.seconds_features, 3) << " s (" << r.featured << " of " << r.filled
+              << " filled holes, " << r.crease_flips << " crease flips, "
               << (o.free_ring ? std::to_string(r.moved_input_vertices) + " input vertices freed"
                               : std::string("input vertices unchanged"))
               << ")";
+  else if (o.recover_features && r.filled > 0)
+    std::cout << " (no crease runs into any filled hole: CGAL's fair patches kept)";
   else if (!o.recover_features)
     std::cout << " (CGAL fill-and-fair only)";
   std::cout << "\n";

@@ -1,7 +1,9 @@
 // Inpainting (paper §6.2, DESIGN.md §"Applications"): find the holes of a mesh, fill their
 // topology with CGAL's triangulate_refine_and_fair_hole (Liepa 2003), then recover the
 // missing features with NMSTV normal filtering and vertex updating, with large fidelity
-// (α, ω₃) outside the filled region, almost none inside, and β/10 inside.
+// (α, ω₃) outside the filled region, almost none inside, and β/10 inside — plus three steps
+// beyond the paper (piecewise-smooth completion of the normals, a convex vertex placement,
+// crease-aligning edge flips); docs/inpainting.md says why and what each is worth.
 //
 // Also here: a hole puncher for tests and benchmarks, and the error figures of an inpainting
 // result against a ground truth.
@@ -84,10 +86,12 @@ struct InpaintOptions {
   /// Rings of input vertices around each filled hole that may move (0: every input vertex stays
   /// exactly where it was). Ring 1 is the hole's boundary, ring k the vertices k−1 edges from it.
   int free_ring = 0;
-  /// Normal filtering parameters (Algorithm 1) used around the holes. Defaults: the "cad"
-  /// setting tuned on bench/inpaint (α = 2, β = 0.02, γ = 0.5, ρ = 0.1, per-iteration projection) — see docs/inpainting.md.
+  /// Normal filtering parameters (Algorithm 1) used around the holes. Defaults, tuned on
+  /// bench/inpaint: α = 2, β = 0.02, γ = 0.5, ρ = 0.1, projection after every N-step
+  /// (docs/inpainting.md).
   NormalFilterOptions normals = default_normal_options();
-  /// Vertex update parameters (Algorithm 2) used around the holes.
+  /// Vertex update parameters (Algorithm 2) used around the holes. Defaults: ω₁ = 1, ω₂ = 0,
+  /// ω₃ = 0.1, 60 iterations.
   VertexUpdateOptions vertices = default_vertex_options();
   double outside_alpha = 100;   ///< α multiplier on input faces (the fidelity that keeps them)
   double inside_alpha = 1e-6;   ///< α multiplier on new faces (their initial normals mean nothing)
@@ -158,8 +162,10 @@ struct InpaintResult {
   int featured = 0;                ///< filled holes the feature recovery ran on
   int moved_input_vertices = 0;    ///< input vertices freed by free_ring
   int crease_flips = 0;            ///< edge flips made by the feature recovery
-  NormalFilterResult normal_report;  ///< last round (empty when nothing was solved)
-  VertexUpdateResult vertex_report;  ///< last round
+  /// Reports of the last round, on the working region around the recovered holes (their own
+  /// face and edge numbering; empty when nothing was solved).
+  NormalFilterResult normal_report;
+  VertexUpdateResult vertex_report;
   double seconds_fill = 0, seconds_features = 0;
 };
 
