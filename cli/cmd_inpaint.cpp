@@ -10,6 +10,7 @@
 #include "msmesh/errors.h"
 #include "msmesh/inpaint.h"
 #include "msmesh/io.h"
+#include "report.h"
 
 namespace msmesh::cli {
 namespace {
@@ -21,6 +22,7 @@ struct Args {
   std::vector<int> holes;
   bool list = false, no_features = false, fill_outer = false, all_featured = false, no_flips = false, no_placement = false, no_smoothing = false, json = false, quiet = false, in_place = false,
        ascii = false;
+  std::string report;  // --report: HTML report (cli/report.h)
   // Tuning (hidden group): parameters of the feature recovery.
   double alpha = 0, beta = 0, gamma = 0, rho = 0, omega2 = 0, omega3 = 0;
   double jump_angle = 0, placement_smoothing = 0, density = 0, outside_alpha = 0, inside_alpha = 0, inside_beta = 0, inside_omega3 = 0;
@@ -154,6 +156,7 @@ void run(const Args& a, const Given& given) {
 
   InpaintErrors err;
   if (!a.truth.empty()) err = inpaint_errors(mesh.V, mesh.F, r.V, r.F, r.new_faces, truth.V, truth.F);
+  if (!a.report.empty()) write_inpaint_report(a.report, a.input, mesh, r, a.truth.empty() ? nullptr : &truth, o);
 
   if (a.json) {
     Json j;
@@ -232,6 +235,7 @@ void run(const Args& a, const Given& given) {
     std::cout << "  filled region vs truth: max/mean/RMS " << fmt(err.max * 1e3) << "/" << fmt(err.mean * 1e3) << "/"
               << fmt(err.rms * 1e3) << " e-3 of bbox diagonal (" << err.points << " points), new-face normal error "
               << fmt(err.mean_normal_error_deg) << " deg\n";
+  if (!a.report.empty()) std::cout << "  report written to " << a.report << "\n";
 }
 
 const Registrar reg("inpaint", 80, [](CLI::App& app) {
@@ -256,6 +260,7 @@ const Registrar reg("inpaint", 80, [](CLI::App& app) {
   c->add_flag("--all-holes-features", a->all_featured,
               "Recover features in every filled hole (default: only where a crease runs into the hole)");
   c->add_option("--truth", a->truth, "Ground-truth mesh: print the filled region's distance errors");
+  c->add_option("--report", a->report, "Write an HTML report: 3D viewer (new faces tinted), hole table, plots");
   auto add = [&](const std::string& name, auto* target, const std::string& help) {
     given->opts[name] = c->add_option(name, *target, help)->group("Tuning (defaults in docs/inpainting.md)");
   };

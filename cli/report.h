@@ -4,8 +4,8 @@
 //  - write_report(): one self-contained HTML file with an interactive three.js viewer (the
 //    bundle in report/dist/viewer.js, embedded into the program at build time), the
 //    parameters, the error figures and the convergence plots;
-//  - write_denoise_report() / write_segment_report(): the report of one run of those
-//    subcommands (their --report option).
+//  - write_denoise_report() / write_segment_report() / write_inpaint_report(): the report of
+//    one run of those subcommands (their --report option).
 #pragma once
 #include <Eigen/Core>
 #include <string>
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "msmesh/denoise.h"
+#include "msmesh/inpaint.h"
 #include "msmesh/mesh.h"
 #include "msmesh/render.h"
 #include "msmesh/segment.h"
@@ -125,5 +126,10 @@ void write_denoise_report(const std::string& path, const std::string& input_path
 /// table and the normal filtering plots.
 void write_segment_report(const std::string& path, const std::string& input_path, const Mesh& mesh,
                           const SegmentOptions& options, const SegmentResult& result);
+
+/// The report of `msmesh inpaint`: input and result (new faces tinted), truth when given,
+/// the hole table and the plots of the last feature-recovery round.
+void write_inpaint_report(const std::string& path, const std::string& input_path, const Mesh& input,
+                          const InpaintResult& result, const Mesh* truth, const InpaintOptions& options);
 
 }  // namespace msmesh::cli

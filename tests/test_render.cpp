@@ -491,3 +491,28 @@ TEST(RenderCli, RenderCompareAndReport) {
     EXPECT_EQ(html.find(part), std::string::npos) << part;
   fs::remove_all(dir);
 }
+
+TEST(RenderCli, SegmentAndInpaintReports) {
+  const fs::path dir = temp_folder("reports");
+  const std::string M = std::string(MSMESH_CLI_PATH) + " ";
+  auto q = [&](const char* name) { return "'" + (dir / name).string() + "'"; };
+  ASSERT_EQ(run(M + "shape fandisk --resolution 6 -o " + q("clean.obj")).status, 0);
+  CliRun r = run(M + "segment " + q("clean.obj") + " -o " + q("seg.ply") + " --labels " + q("labels.txt") +
+                 " --report " + q("seg.html") + " -q");
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::string html = read_file(dir / "seg.html");
+  for (const char* part : {"\"labels\":\"", "\"field\":\"", "\"initial_color\":\"labels\"", "<h2>Segments</h2>"})
+    EXPECT_NE(html.find(part), std::string::npos) << part;
+  r = run(M + "render " + q("clean.obj") + " --color labels --labels " + q("labels.txt") + " --size 160x120 -o " +
+          q("labels.png"));
+  EXPECT_EQ(r.status, 0) << r.out;
+
+  ASSERT_EQ(run(M + "holes " + q("clean.obj") + " -o " + q("holes.obj") + " --count 2 --seed 3").status, 0);
+  r = run(M + "inpaint " + q("holes.obj") + " -o " + q("filled.obj") + " --truth " + q("clean.obj") + " --report " +
+          q("inpaint.html") + " -q");
+  ASSERT_EQ(r.status, 0) << r.out;
+  html = read_file(dir / "inpaint.html");
+  for (const char* part : {"\"highlight\":\"", "<h2>Holes</h2>", "Filled region against the ground truth"})
+    EXPECT_NE(html.find(part), std::string::npos) << part;
+  fs::remove_all(dir);
+}

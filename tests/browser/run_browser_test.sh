@@ -30,7 +30,9 @@ cd "$work"
 "$msmesh" noise clean.obj -o noisy.obj --sigma 0.3 --seed 7 >/dev/null
 "$msmesh" denoise noisy.obj -o denoised.obj --truth clean.obj --report report.html -q >/dev/null
 "$msmesh" segment clean.obj -o segments.ply --report segments.html -q >/dev/null
-for r in report segments; do
+"$msmesh" holes clean.obj -o holes.obj --count 2 --on-features --seed 2 >/dev/null
+"$msmesh" inpaint holes.obj -o filled.obj --truth clean.obj --report inpaint.html -q >/dev/null
+for r in report segments inpaint; do
   echo "== $r.html ($(wc -c < $r.html) bytes)"
   mkdir -p "$work/$r"
   python3 "$here/check_report.py" "$r.html" "$work/$r"
