@@ -1,6 +1,10 @@
 // Small meshes built in code, shared by the tests.
 #pragma once
+#include <sys/wait.h>
+
 #include <Eigen/Core>
+#include <array>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -47,6 +51,26 @@ inline Mesh fin() {
   m.F.resize(3, 3);
   m.F << 0, 1, 2, 1, 0, 3, 0, 1, 4;
   return m;
+}
+
+/// Result of running the msmesh program: exit status and combined stdout/stderr.
+struct CliRun {
+  int status = -1;
+  std::string out;
+};
+
+/// Runs `msmesh ARGS` (the built program) and captures its output.
+inline CliRun run_cli(const std::string& args) {
+  CliRun r;
+  const std::string cmd = std::string(MSMESH_CLI_PATH) + " " + args + " 2>&1";
+  FILE* p = ::popen(cmd.c_str(), "r");
+  if (!p) return r;
+  std::array<char, 4096> buf;
+  std::size_t n;
+  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+  const int st = ::pclose(p);
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return r;
 }
 
 /// Path of the public test meshes, or "" when ../shared is absent (tests then skip).

@@ -17,24 +17,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct CliRun {
-  int status = -1;
-  std::string out;  ///< stdout and stderr
-};
-
-CliRun run_cli(const std::string& args) {
-  CliRun r;
-  const std::string cmd = std::string(MSMESH_CLI_PATH) + " " + args + " 2>&1";
-  FILE* p = ::popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int st = ::pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
-
 fs::path temp_folder() {
   std::random_device rd;
   fs::path p = fs::temp_directory_path() / ("msmesh_test_info_" + std::to_string(::getpid()) + "_" + std::to_string(rd()));
@@ -48,7 +30,7 @@ TEST(InfoCli, JsonSummaryOfAGrid) {
   const fs::path dir = temp_folder();
   const std::string path = (dir / "grid.ply").string();
   write_mesh(path, test::grid(3));
-  const CliRun r = run_cli("info '" + path + "' --json");
+  const test::CliRun r = test::run_cli("info '" + path + "' --json");
   EXPECT_EQ(r.status, 0) << r.out;
   for (const char* part : {"\"vertices\":16", "\"faces\":18", "\"edges\":33", "\"boundary_edges\":12",
                            "\"boundary_loops\":1", "\"largest_boundary_loops\":[12]", "\"components\":1",
@@ -67,7 +49,7 @@ TEST(InfoCli, TextSummaryCountsDefects) {
     std::fputs("v 0 0 0\nv 1 0 0\nv 0.5 1 0\nv 0.5 -1 0.2\nv 0.5 0 1\nv 9 9 9\nf 1 2 3\nf 2 1 4\nf 1 2 5\nf 1 1 2\n", f);
     std::fclose(f);
   }
-  const CliRun r = run_cli("info '" + path + "'");
+  const test::CliRun r = test::run_cli("info '" + path + "'");
   EXPECT_EQ(r.status, 0) << r.out;
   for (const char* part : {"vertices:                      6", "faces:                         3",
                            "non-manifold edges:            1", "unreferenced vertices:         1",
@@ -77,14 +59,14 @@ TEST(InfoCli, TextSummaryCountsDefects) {
 }
 
 TEST(InfoCli, MissingFileExitsWithOneAndNamesTheFile) {
-  const CliRun r = run_cli("info /nonexistent/mesh.obj");
+  const test::CliRun r = test::run_cli("info /nonexistent/mesh.obj");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.out.find("/nonexistent/mesh.obj"), std::string::npos) << r.out;
 }
 
 TEST(InfoCli, StanfordBunnyAsciiPly) {
   MSMESH_REQUIRE_SHARED(path, "stanford_bunny_ply/bunny/bun_zipper.ply");
-  const CliRun r = run_cli("info '" + path + "' --json");
+  const test::CliRun r = test::run_cli("info '" + path + "' --json");
   EXPECT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("\"vertices\":35947"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"faces\":69451"), std::string::npos) << r.out;

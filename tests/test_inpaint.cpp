@@ -88,24 +88,6 @@ Mesh grid_with_touching_holes(int* touching) {
   return m;
 }
 
-struct CliRun {
-  int status = -1;
-  std::string out;  ///< stdout and stderr
-};
-
-CliRun run_cli(const std::string& args) {
-  CliRun r;
-  const std::string cmd = std::string(MSMESH_CLI_PATH) + " " + args + " 2>&1";
-  FILE* p = ::popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int st = ::pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
-
 fs::path temp_folder() {
   std::random_device rd;
   fs::path p =
@@ -419,25 +401,25 @@ TEST(InpaintCli, ListsFillsAndRefusesToOverwriteTheInput) {
   const std::string truth = (dir / "cube.obj").string(), holes = (dir / "holes.obj").string(),
                     out = (dir / "out.obj").string();
   write_mesh(truth, cube);
-  CliRun r = run_cli("holes '" + truth + "' -o '" + holes + "' --count 2 --radius 2 --seed 3 --on-features");
+  test::CliRun r = test::run_cli("holes '" + truth + "' -o '" + holes + "' --count 2 --radius 2 --seed 3 --on-features");
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("punched 2 of 2"), std::string::npos) << r.out;
 
-  r = run_cli("inpaint '" + holes + "' --list");
+  r = test::run_cli("inpaint '" + holes + "' --list");
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("2 boundary loops"), std::string::npos) << r.out;
 
-  r = run_cli("inpaint '" + holes + "' -o '" + out + "' --truth '" + truth + "' --json -q");
+  r = test::run_cli("inpaint '" + holes + "' -o '" + out + "' --truth '" + truth + "' --json -q");
   ASSERT_EQ(r.status, 0) << r.out;
   for (const char* part : {"\"filled\":2", "\"holes_found\":2", "\"errors\":{", "\"rms_e3\":"})
     EXPECT_NE(r.out.find(part), std::string::npos) << part << " not in " << r.out;
   EXPECT_TRUE(find_holes(read_mesh(out).V, read_mesh(out).F).empty());
 
-  r = run_cli("inpaint '" + holes + "' -o '" + holes + "'");
+  r = test::run_cli("inpaint '" + holes + "' -o '" + holes + "'");
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.out.find("refusing to overwrite"), std::string::npos) << r.out;
 
-  r = run_cli("inpaint '" + truth + "' -o '" + out + "'");
+  r = test::run_cli("inpaint '" + truth + "' -o '" + out + "'");
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("no holes"), std::string::npos) << r.out;
   const Mesh same = read_mesh(out);

@@ -2,6 +2,8 @@
 // manifold, outward-oriented mesh without degenerate or sliver faces, whose crease-separated
 // patches are exactly shape_patch_count(name); plus per-shape sizes and properties.
 #include <gtest/gtest.h>
+
+#include "test_helpers.h"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -76,24 +78,6 @@ const int kResolutions[] = {8, 16};
 double min_angle_bound(const std::string& name) {
   if (name == "pyramid") return 10;
   return 15;
-}
-
-struct CliRun {
-  int status = -1;
-  std::string out;  ///< stdout and stderr
-};
-
-CliRun run_cli(const std::string& args) {
-  CliRun r;
-  const std::string cmd = std::string(MSMESH_CLI_PATH) + " " + args + " 2>&1";
-  FILE* p = ::popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int st = ::pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
 }
 
 }  // namespace
@@ -323,7 +307,7 @@ TEST(ShapeCli, WritesListsAndRejectsUnknownNames) {
   fs::create_directories(dir);
   const std::string path = (dir / "cube.off").string();
 
-  const CliRun written = run_cli("shape cube --resolution 3 -o '" + path + "'");
+  const test::CliRun written = test::run_cli("shape cube --resolution 3 -o '" + path + "'");
   EXPECT_EQ(written.status, 0) << written.out;
   EXPECT_NE(written.out.find("108 faces"), std::string::npos) << written.out;
   EXPECT_EQ(written.out.find('\n'), written.out.size() - 1) << "one line expected: " << written.out;
@@ -331,9 +315,9 @@ TEST(ShapeCli, WritesListsAndRejectsUnknownNames) {
   EXPECT_EQ(m.F.rows(), 108);
   EXPECT_EQ(m.V.rows(), 56);
 
-  const CliRun list = run_cli("shape --list");
+  const test::CliRun list = test::run_cli("shape --list");
   EXPECT_EQ(list.status, 0) << list.out;
-  const CliRun unknown = run_cli("shape teapot -o '" + (dir / "teapot.obj").string() + "'");
+  const test::CliRun unknown = test::run_cli("shape teapot -o '" + (dir / "teapot.obj").string() + "'");
   EXPECT_NE(unknown.status, 0);
   EXPECT_NE(unknown.out.find("teapot"), std::string::npos) << unknown.out;
   for (const std::string& name : shape_names()) {
@@ -341,6 +325,6 @@ TEST(ShapeCli, WritesListsAndRejectsUnknownNames) {
     EXPECT_NE(unknown.out.find(name), std::string::npos) << unknown.out;
   }
   EXPECT_FALSE(fs::exists(dir / "teapot.obj"));
-  EXPECT_NE(run_cli("shape cube").status, 0);  // no output file
+  EXPECT_NE(test::run_cli("shape cube").status, 0);  // no output file
   fs::remove_all(dir);
 }
