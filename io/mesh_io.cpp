@@ -893,6 +893,13 @@ std::string mesh_format_from_path(const std::string& path) {
 Mesh read_mesh(const std::string& path, Eigen::Index* dropped_degenerate) {
   const std::string format = mesh_format_from_path(path);
   const std::string data = read_whole_file(path);
+  return read_mesh_from_memory(data, format, path, dropped_degenerate);
+}
+
+Mesh read_mesh_from_memory(std::string_view data, const std::string& format, const std::string& path,
+                           Eigen::Index* dropped_degenerate) {
+  if (format != "obj" && format != "off" && format != "ply" && format != "stl")
+    throw IoError(path + ": unknown mesh format " + quote_word(format) + "; expected obj, off, ply or stl");
   if (data.empty()) throw IoError(path + ": empty file");
   Soup soup;
   t_polygon_limit = data.size();

@@ -7,6 +7,7 @@
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "msmesh/mesh.h"
@@ -22,6 +23,12 @@ std::string mesh_format_from_path(const std::string& path);
 /// are dropped (`dropped_degenerate` counts them, when given). PLY and OFF vertex colours
 /// (uchar RGB) fill Mesh::vertex_colors.
 Mesh read_mesh(const std::string& path, Eigen::Index* dropped_degenerate = nullptr);
+
+/// Reads a mesh from the bytes of a file already in memory, exactly as read_mesh reads a file
+/// of format `format` ("obj", "off", "ply" or "stl", as from mesh_format_from_path); `name`
+/// stands for the file in error messages. Same results and errors as read_mesh.
+Mesh read_mesh_from_memory(std::string_view data, const std::string& format, const std::string& name,
+                           Eigen::Index* dropped_degenerate = nullptr);
 
 struct WriteOptions {
   bool binary = true;  ///< PLY and STL: binary (true) or ascii; OBJ and OFF are always text
