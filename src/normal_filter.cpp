@@ -1,6 +1,7 @@
 #include "msmesh/normal_filter.h"
 
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 #include "msmesh/errors.h"
@@ -9,6 +10,8 @@
 #include "msmesh/operators.h"
 #include "msmesh/topology.h"
 #include "normalize.h"
+#include "parallel.h"
+#include "pcg.h"
 #include "sparse_solve.h"
 
 namespace msmesh {
@@ -22,10 +25,6 @@ void require(bool ok, const char* name, double value, const char* range) {
   throw InvalidInput(os.str());
 }
 
-// ‖a‖_w for a field with one row per element and weights w.
-double weighted_norm(const Eigen::MatrixXd& a, const Eigen::VectorXd& w) {
-  return std::sqrt(std::max(0.0, inner_product(a, a, w)));
-}
 
 }  // namespace
 
@@ -41,6 +40,8 @@ void NormalFilterOptions::validate() const {
           relaxation, "(0, 1.618...)");
   require(max_iterations >= 1 && max_iterations <= 100000, "max_iterations", max_iterations, "[1, 100000]");
   require(std::isfinite(tolerance) && tolerance >= 0, "tolerance", tolerance, ">= 0");
+  require(std::isfinite(solver_tolerance) && solver_tolerance > 0 && solver_tolerance < 1, "solver_tolerance",
+          solver_tolerance, "(0, 1)");
   require(std::isfinite(v_initial) && v_initial >= 0 && v_initial <= 1, "v_initial", v_initial, "[0, 1]");
 }
 
@@ -182,11 +183,36 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
       (2.0 * o.alpha) * ops.face_areas.cwiseMax(area_floor).cwiseProduct(face_alpha).cwiseMax(area_floor);
 
   // N-step matrix (eq. 20 in matrix form, DESIGN.md step 1): 2αS + r Gᵀ L G; constant.
-  const SparseMatrix GtL = ops.G.transpose() * ops.edge_lengths.asDiagonal();
-  SparseMatrix A = o.penalty * (GtL * ops.G);
-  A += SparseMatrix(fid_weight.asDiagonal());
-  const detail::FixedCholesky chol(A, "normal filtering (N-step)");
-  const Eigen::MatrixXd rhs0 = fid_weight.asDiagonal() * N0;
+  SparseMatrix A;
+  {
+    const SparseMatrix GtL = ops.G.transpose() * ops.edge_lengths.asDiagonal();
+    A = o.penalty * (GtL * ops.G);
+    A += SparseMatrix(fid_weight.asDiagonal());
+  }
+  // Auto: conjugate gradients, whose cost grows linearly with the mesh, unless per-face α
+  // weights switch the fidelity off somewhere (inpainting): the matrix then loses its
+  // diagonal dominance there and the factorisation is faster and exact.
+  const bool use_cg = o.solver == LinearSolver::CG ||
+                      (o.solver == LinearSolver::Auto && (face_alpha.size() == 0 || face_alpha.minCoeff() >= 0.5));
+  std::unique_ptr<detail::FixedCholesky> chol;
+  std::unique_ptr<detail::BlockPcg> pcg;
+  if (use_cg)
+    pcg = std::make_unique<detail::BlockPcg>(A);
+  else
+    chol = std::make_unique<detail::FixedCholesky>(A, "normal filtering (N-step)");
+  A = SparseMatrix();
+
+  // Gᵀ L per face: face f meets edge face_edges(f,k) with sign gt_sign(f,k) (+1 when f is the
+  // edge's first face, −1 for the second, 0 when the edge carries no gradient), so the
+  // right-hand side is assembled face by face without a scatter.
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> gt_weight(nf, 3);
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int e = topo.face_edges(f, k);
+      double sgn = 0;
+      if (topo.edge_is_interior[e]) sgn = topo.edge_faces(e, 0) == f ? 1.0 : (topo.edge_faces(e, 1) == f ? -1.0 : 0.0);
+      gt_weight(f, k) = sgn * ops.edge_lengths(e);
+    }
 
   // v-step matrix (eq. 23): L·diag(2γ w‖p‖ + β_e/(2ε)) + 2βε Dᵀ L_W D. Only the diagonal
   // changes between iterations. Dᵀ L_W D is assembled directly from the corner lines (each
@@ -196,72 +222,97 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
   const Eigen::VectorXd v_rhs = ops.edge_lengths.cwiseProduct(edge_beta) * (o.beta / (2 * o.epsilon));
   Eigen::VectorXd v_diag(ne);
 
-  Eigen::MatrixXd N = N0;
-  Eigen::MatrixXd p = Eigen::MatrixXd::Zero(ne, 3), lambda = Eigen::MatrixXd::Zero(ne, 3);
+  // The iterates, row-major (one row per face or edge) and allocated once.
+  using Rows = detail::RowMatrixX3;
+  const Rows N0r = detail::to_rows(N0);
+  Rows N = N0r, N_prev(nf, 3), rhs(nf, 3);
+  Rows p = Rows::Zero(ne, 3), lambda = Rows::Zero(ne, 3);
   Eigen::VectorXd v = Eigen::VectorXd::Constant(ne, o.v_initial);
   Eigen::VectorXd w = Eigen::VectorXd::Ones(ne);  // w⁰ = 1
   Eigen::VectorXd p_norm = Eigen::VectorXd::Zero(ne);
+  const Eigen::VectorXd& len = ops.edge_lengths;
+  const Eigen::VectorXd& area = ops.face_areas;
 
   NormalFilterResult res;
   for (int k = 0; k < o.max_iterations; ++k) {
-    // 1. N-step: (2αS + r GᵀLG) N = 2αS N⁰ + GᵀL (r p + λ), then project rows onto the sphere.
-    const Eigen::MatrixXd rhs = rhs0 + GtL * (o.penalty * p + lambda);
-    Eigen::MatrixXd Nn = chol.solve(rhs, "normal filtering (N-step)");
+    // 1. N-step: (2αS + r GᵀLG) N = 2αS N⁰ + GᵀL (r p + λ).
+    detail::parallel_for(nf, [&](Eigen::Index f) {
+      Eigen::RowVector3d b = fid_weight(f) * N0r.row(f);
+      for (int j = 0; j < 3; ++j) {
+        const int e = topo.face_edges(f, j);
+        if (gt_weight(f, j) != 0) b += gt_weight(f, j) * (o.penalty * p.row(e) + lambda.row(e));
+      }
+      rhs.row(f) = b;
+    });
+    N_prev = N;
+    if (use_cg) {
+      const detail::PcgStats st = pcg->solve(rhs, N, o.solver_tolerance, 10000, "normal filtering (N-step)");
+      res.n_solver_iterations.push_back(st.iterations);
+    } else {
+      N = chol->solve(Eigen::MatrixXd(rhs), "normal filtering (N-step)");
+    }
     // The paper projects N onto the unit sphere after every N-step. That makes the splitting
     // inconsistent (p and λ then refer to another N than the linear N-step produces): for
     // α ≲ 1 or heavy noise the residual grows and the normals end up worse than the input
     // (gnf fandisk 0.7: normal MSAE 1106e-3 at α = 0.5 against 818e-3 for the noisy input).
     // Default: solve the relaxed problem and project once after the loop (docs/presets.md).
     if (o.project_each_iteration) {
-      for (Eigen::Index f = 0; f < nf; ++f) {
-        const double len = Nn.row(f).norm();
-        if (len > 0 && std::isfinite(len))
-          Nn.row(f) /= len;
+      detail::parallel_for(nf, [&](Eigen::Index f) {
+        const double l = N.row(f).norm();
+        if (l > 0 && std::isfinite(l))
+          N.row(f) /= l;
         else
-          Nn.row(f) = N.row(f);
-      }
+          N.row(f) = N_prev.row(f);
+      });
     }
-    // 2. p-step (eq. 22): vector soft threshold of ψ = ∇N − λ/r by γ v² w / r.
-    const Eigen::MatrixXd gN = ops.G * Nn;
-#pragma omp parallel for schedule(static)
-    for (Eigen::Index e = 0; e < ne; ++e) {
-      if (!topo.edge_is_interior[e]) {
-        p.row(e).setZero();
-        p_norm(e) = 0;
-        continue;
+    const double change = std::sqrt(std::max(0.0, detail::deterministic_sums<1>(nf, [&](Eigen::Index f0, Eigen::Index f1,
+                                                                                         std::array<double, 1>& s) {
+      for (Eigen::Index f = f0; f < f1; ++f) s[0] += area(f) * (N.row(f) - N_prev.row(f)).squaredNorm();
+    })[0]));
+
+    // 2.+4. One pass over the edges: p-step (eq. 22: vector soft threshold of ψ = ∇N − λ/r
+    // by γ v² w / r), the multiplier (DESIGN.md step 4: λ += ν r (p − ∇N)), the residual
+    // ‖p − ∇N‖_V, and the diagonal of the v-step with this iteration's weights w; then the
+    // IRLA weights of the next iteration from p^{k+1}.
+    const double resid2 = detail::deterministic_sums<1>(ne, [&](Eigen::Index e0, Eigen::Index e1,
+                                                                std::array<double, 1>& s) {
+      for (Eigen::Index e = e0; e < e1; ++e) {
+        Eigen::RowVector3d g = Eigen::RowVector3d::Zero();
+        if (topo.edge_is_interior[e]) {
+          g = N.row(topo.edge_faces(e, 0)) - N.row(topo.edge_faces(e, 1));
+          const Eigen::RowVector3d psi = g - lambda.row(e) / o.penalty;
+          const double psi_norm = psi.norm();
+          const double thr = o.gamma * v(e) * v(e) * w(e) / o.penalty;
+          if (psi_norm > thr) {
+            p.row(e) = (1.0 - thr / psi_norm) * psi;
+            p_norm(e) = psi_norm - thr;
+          } else {
+            p.row(e).setZero();
+            p_norm(e) = 0;
+          }
+        } else {
+          p.row(e).setZero();
+          p_norm(e) = 0;
+        }
+        const Eigen::RowVector3d r = p.row(e) - g;
+        lambda.row(e) += o.relaxation * o.penalty * r;
+        s[0] += len(e) * r.squaredNorm();
+        v_diag(e) = Kv_diag(e) + len(e) * (2 * o.gamma * w(e) * p_norm(e) + edge_beta(e) * o.beta / (2 * o.epsilon));
+        w(e) = irla_weight(p_norm(e), o);
       }
-      const Eigen::RowVector3d psi = gN.row(e) - lambda.row(e) / o.penalty;
-      const double psi_norm = psi.norm();
-      const double thr = o.gamma * v(e) * v(e) * w(e) / o.penalty;
-      if (psi_norm > thr) {
-        p.row(e) = (1.0 - thr / psi_norm) * psi;
-        p_norm(e) = psi_norm - thr;
-      } else {
-        p.row(e).setZero();
-        p_norm(e) = 0;
-      }
-    }
+    })[0];
     // 3. v-step (eq. 23) with the weights of this iteration and the new p; warm-started
     // Jacobi-preconditioned CG (the matrix is strongly diagonally dominant for small ε).
-    for (Eigen::Index e = 0; e < ne; ++e)
-      v_diag(e) = Kv_diag(e) + ops.edge_lengths(e) * (2 * o.gamma * w(e) * p_norm(e) +
-                                                     edge_beta(e) * o.beta / (2 * o.epsilon));
     const int cg_iterations = solve_v_step(Kv, Kv_diag, v_diag, v_rhs, v);
     if (cg_iterations < 0) throw SolverError("normal filtering: v-step conjugate gradient did not converge");
     res.v_solver_iterations.push_back(cg_iterations);
-    // 4. Multiplier (DESIGN.md step 4: λ += ν r (p − ∇N), the sign consistent with the N- and p-steps).
-    const Eigen::MatrixXd r = p - gN;
-    lambda += o.relaxation * o.penalty * r;
 
-    const Eigen::MatrixXd dN = Nn - N;
-    const double change = weighted_norm(dN, ops.face_areas);
-    N = std::move(Nn);
-    res.residual_history.push_back(weighted_norm(r, ops.edge_lengths));
+    res.residual_history.push_back(std::sqrt(std::max(0.0, resid2)));
     res.change_history.push_back(change);
-    if (o.record_energy) res.energy_history.push_back(energy_normalised(ops, N, v, N0, o, face_alpha, edge_beta));
+    if (o.record_energy)
+      res.energy_history.push_back(
+          energy_normalised(ops, Eigen::MatrixXd(N), v, N0, o, face_alpha, edge_beta));
     res.iterations = k + 1;
-    // IRLA weights for the next iteration from p^{k+1}.
-    for (Eigen::Index e = 0; e < ne; ++e) w(e) = irla_weight(p_norm(e), o);
 
     if (progress) {
       ProgressEvent ev{"normal filtering", k + 1, o.max_iterations, change};
@@ -272,14 +323,14 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
       break;
     }
   }
-  for (Eigen::Index f = 0; f < nf; ++f) {
-    const double len = N.row(f).norm();
-    if (len > 0 && std::isfinite(len))
-      N.row(f) /= len;
+  detail::parallel_for(nf, [&](Eigen::Index f) {
+    const double l = N.row(f).norm();
+    if (l > 0 && std::isfinite(l))
+      N.row(f) /= l;
     else
-      N.row(f) = N0.row(f);
-  }
-  res.normals = std::move(N);
+      N.row(f) = N0r.row(f);
+  });
+  res.normals = N;
   res.v = std::move(v);
   return res;
 }

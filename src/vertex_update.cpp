@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 #include "msmesh/errors.h"
@@ -11,6 +12,8 @@
 #include "msmesh/operators.h"
 #include "msmesh/topology.h"
 #include "normalize.h"
+#include "parallel.h"
+#include "pcg.h"
 #include "sparse_solve.h"
 
 namespace msmesh {
@@ -26,6 +29,8 @@ void VertexUpdateOptions::validate() const {
   if (!(std::isfinite(omega3) && omega3 > 0)) fail("omega3", omega3, "> 0");
   if (max_iterations < 1 || max_iterations > 100000) fail("max_iterations", max_iterations, "[1, 100000]");
   if (!(std::isfinite(tolerance) && tolerance >= 0)) fail("tolerance", tolerance, ">= 0");
+  if (!(std::isfinite(solver_tolerance) && solver_tolerance > 0 && solver_tolerance < 1))
+    fail("solver_tolerance", solver_tolerance, "(0, 1)");
 }
 
 namespace {
@@ -97,16 +102,28 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
   if (o.omega2 > 0) A += o.omega2 * SparseMatrix(H.transpose() * H);
   // A tiny floor keeps vertices with ω₃ multiplier 0 and no face (isolated) well-posed.
   A += SparseMatrix(d3.cwiseMax(1e-10).asDiagonal());
-  const detail::FixedCholesky chol(A, "vertex update");
-  const SparseMatrix Kt = o.omega1 * K.transpose();
-  const Eigen::MatrixXd rhs0 = d3.asDiagonal() * V0;
+  // Auto: conjugate gradients (linear cost; κ is bounded by about (ω₁·6 + ω₂·16 + ω₃)/ω₃)
+  // unless per-vertex weights lower ω₃ somewhere (inpainting: new vertices are free), which
+  // makes the system badly conditioned: then factor it once.
+  const bool use_cg = o.solver == LinearSolver::CG ||
+                      (o.solver == LinearSolver::Auto && (w3.size() == 0 || w3.minCoeff() >= 0.5));
+  std::unique_ptr<detail::FixedCholesky> chol;
+  std::unique_ptr<detail::BlockPcg> pcg;
+  if (use_cg)
+    pcg = std::make_unique<detail::BlockPcg>(A);
+  else
+    chol = std::make_unique<detail::FixedCholesky>(A, "vertex update");
+  A = SparseMatrix();
+  const detail::RowSparse Kt = o.omega1 * K.transpose();  // row-major: one row per vertex
+  K = SparseMatrix();
+  using Rows = detail::RowMatrixX3;
+  const Rows rhs0 = detail::to_rows(d3.asDiagonal() * V0);
 
-  Eigen::MatrixXd X = V0;
-  Eigen::MatrixXd P(3 * nf, 3);
+  Rows X = detail::to_rows(V0), X_prev(nv, 3), rhs(nv, 3), P(3 * nf, 3);
   for (int k = 0; k < o.max_iterations; ++k) {
     // P-step (eq. 25), per face.
     Eigen::Index fallbacks = 0;
-#pragma omp parallel for schedule(static) reduction(+ : fallbacks)
+#pragma omp parallel for schedule(static) reduction(+ : fallbacks) if (nf >= detail::kParallelMin)
     for (Eigen::Index f = 0; f < nf; ++f) {
       Eigen::Matrix3d C;  // rows: centred corners M V_f
       for (int c = 0; c < 3; ++c) C.row(c) = X.row(F(f, c));
@@ -126,11 +143,24 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
       }
       P.block<3, 3>(3 * f, 0) = Ph;
     }
-    // V-step (eq. 27).
-    const Eigen::MatrixXd rhs = Kt * P + rhs0;
-    Eigen::MatrixXd Xn = chol.solve(rhs, "vertex update");
-    const double change = std::sqrt((Xn - X).squaredNorm() / double(nv));
-    X = std::move(Xn);
+    // V-step (eq. 27): rhs = ω₁KᵀP + ω₃V⁰, row by row.
+    detail::parallel_for(nv, [&](Eigen::Index i) {
+      Eigen::RowVector3d b = rhs0.row(i);
+      for (detail::RowSparse::InnerIterator it(Kt, i); it; ++it) b += it.value() * P.row(it.col());
+      rhs.row(i) = b;
+    });
+    X_prev = X;
+    if (use_cg) {
+      const detail::PcgStats st = pcg->solve(rhs, X, o.solver_tolerance, 100000, "vertex update");
+      res.solver_iterations.push_back(st.iterations);
+    } else {
+      X = chol->solve(Eigen::MatrixXd(rhs), "vertex update");
+    }
+    const double change = std::sqrt(detail::deterministic_sums<1>(nv, [&](Eigen::Index i0, Eigen::Index i1,
+                                                                           std::array<double, 1>& s) {
+                                       for (Eigen::Index i = i0; i < i1; ++i) s[0] += (X.row(i) - X_prev.row(i)).squaredNorm();
+                                     })[0] /
+                                     double(nv));
     res.change_history.push_back(change);
     res.iterations = k + 1;
     res.fallback_projections = fallbacks;
@@ -143,7 +173,7 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
       break;
     }
   }
-  res.V = norm.undo(X);
+  res.V = norm.undo(Eigen::MatrixXd(X));
   return res;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "msmesh/progress.h"
+#include "msmesh/solver.h"
 
 namespace msmesh {
 
@@ -32,6 +33,11 @@ struct NormalFilterOptions {
   /// Record the energy (15) after every iteration in NormalFilterResult::energy_history
   /// (costs one extra pass over the edges per iteration).
   bool record_energy = false;
+  /// Solver of the N-step (2αS + r GᵀLG) N = ...; Auto picks conjugate gradients.
+  LinearSolver solver = LinearSolver::Auto;
+  /// Relative residual at which conjugate gradients stop (solver CG). At 1e-8 the filtered
+  /// normals agree with the Cholesky path to about 1e-7 (docs/performance.md).
+  double solver_tolerance = 1e-8;
   /// Throws InvalidInput naming the parameter, its value and the valid range.
   void validate() const;
 };
@@ -51,6 +57,7 @@ struct NormalFilterResult {
   std::vector<double> change_history;    ///< ‖N^{k+1} − N^k‖_U per iteration
   std::vector<double> energy_history;    ///< energy (15) per iteration (when record_energy)
   std::vector<int> v_solver_iterations;  ///< CG iterations of each v-step
+  std::vector<int> n_solver_iterations;  ///< CG iterations of each N-step (solver CG)
 };
 
 /// Filters the face normals of (V, F) (#V by 3, #F by 3). `normals0` (#F by 3) are the

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "msmesh/progress.h"
+#include "msmesh/solver.h"
 
 namespace msmesh {
 
@@ -18,6 +19,10 @@ struct VertexUpdateOptions {
   double omega3 = 0.1;   ///< ω₃ > 0, closeness to the input positions (paper range [0.001, 0.1])
   int max_iterations = 30;   ///< k ≥ 1
   double tolerance = 1e-6;   ///< ε₂: stop when the RMS vertex move (mean-edge units) < ε₂
+  /// Solver of the V-step (ω₁KᵀK + ω₂HᵀH + ω₃I) V = ...; Auto picks by size (docs/performance.md).
+  LinearSolver solver = LinearSolver::Auto;
+  /// Relative residual at which conjugate gradients stop (solver CG).
+  double solver_tolerance = 1e-8;
   void validate() const;
 };
 
@@ -31,6 +36,7 @@ struct VertexUpdateResult {
   int iterations = 0;
   bool converged = false;
   std::vector<double> change_history;  ///< RMS vertex move per iteration (mean-edge units)
+  std::vector<int> solver_iterations;  ///< CG iterations of each V-step (solver CG)
   Eigen::Index fallback_projections = 0;  ///< faces that used the degenerate projection (last iteration)
 };
 

@@ -1,0 +1,15 @@
+// Choice of linear solver for the constant systems of Algorithms 1 and 2.
+#pragma once
+
+namespace msmesh {
+
+/// How the systems that stay fixed over the iterations (the N-step of Algorithm 1, the
+/// V-step of Algorithm 2) are solved. Both give the same result to the solver tolerance
+/// (about 1e-10 relative); they differ in speed and memory (docs/performance.md).
+enum class LinearSolver {
+  Auto,      ///< the faster of the two for this system and size (measured rule, docs/performance.md)
+  Cholesky,  ///< factor once with CHOLMOD, then two triangular solves per iteration
+  CG,        ///< Jacobi-preconditioned conjugate gradients warm-started from the last iterate
+};
+
+}  // namespace msmesh

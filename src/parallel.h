@@ -1,0 +1,41 @@
+// Internal: deterministic parallel loops (the results must not depend on the thread count).
+#pragma once
+#include <Eigen/Core>
+#include <algorithm>
+#include <array>
+#include <vector>
+
+namespace msmesh::detail {
+
+/// Rows per block. Reductions form one partial sum per block and add the partials in block
+/// order, so a sum is the same whatever the number of threads; loops over fewer than
+/// kParallelMin rows run on one thread (the fork/join would cost more than the work).
+constexpr Eigen::Index kBlock = 2048;
+constexpr Eigen::Index kParallelMin = 4 * kBlock;
+
+/// Runs body(begin, end, sums) over fixed blocks of [0, n) and returns the K sums, added in
+/// block order. body adds its block's contributions to sums (zero-initialised).
+template <int K, class Body>
+std::array<double, K> deterministic_sums(Eigen::Index n, Body&& body) {
+  const Eigen::Index nb = (n + kBlock - 1) / kBlock;
+  std::vector<std::array<double, K>> partial(static_cast<size_t>(nb));
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (Eigen::Index b = 0; b < nb; ++b) {
+    std::array<double, K> s{};
+    body(b * kBlock, std::min(n, (b + 1) * kBlock), s);
+    partial[static_cast<size_t>(b)] = s;
+  }
+  std::array<double, K> total{};
+  for (const auto& s : partial)
+    for (int k = 0; k < K; ++k) total[k] += s[k];
+  return total;
+}
+
+/// Runs body(i) for i in [0, n), in parallel when n is large enough.
+template <class Body>
+void parallel_for(Eigen::Index n, Body&& body) {
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (Eigen::Index i = 0; i < n; ++i) body(i);
+}
+
+}  // namespace msmesh::detail

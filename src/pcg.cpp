@@ -1,0 +1,185 @@
+#include "pcg.h"
+
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include "msmesh/errors.h"
+#include "parallel.h"
+
+namespace msmesh::detail {
+
+namespace {
+
+// Sums of three columns, K of them at once, in a fixed order (parallel.h).
+template <int K, class Body>
+std::array<std::array<double, 3>, K> column_sums(Eigen::Index n, Body&& body) {
+  const auto flat = deterministic_sums<3 * K>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<double, 3 * K>& s) {
+    std::array<std::array<double, 3>, K> t{};
+    body(i0, i1, t);
+    for (int k = 0; k < K; ++k)
+      for (int c = 0; c < 3; ++c) s[3 * k + c] += t[k][c];
+  });
+  std::array<std::array<double, 3>, K> out{};
+  for (int k = 0; k < K; ++k)
+    for (int c = 0; c < 3; ++c) out[k][c] = flat[3 * k + c];
+  return out;
+}
+using Sums = std::array<double, 3>;
+
+}  // namespace
+
+RowMatrixX3 to_rows(const Eigen::MatrixXd& M) { return RowMatrixX3(M); }
+
+BlockPcg::BlockPcg(const Eigen::SparseMatrix<double>& A) : A_(A) {
+  A_.makeCompressed();
+  inv_diag_.resize(A_.rows());
+  for (Eigen::Index i = 0; i < A_.rows(); ++i) {
+    double d = 0;
+    for (RowSparse::InnerIterator it(A_, i); it; ++it)
+      if (it.col() == i) d += it.value();
+    if (!(d > 0) || !std::isfinite(d)) {
+      std::ostringstream os;
+      os << "conjugate gradients: diagonal entry " << i << " = " << d << " is not positive";
+      throw SolverError(os.str());
+    }
+    inv_diag_(i) = 1.0 / d;
+  }
+}
+
+PcgStats BlockPcg::solve(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance, int max_iterations,
+                         const std::string& what) const {
+  const Eigen::Index n = A_.rows();
+  const int* outer = A_.outerIndexPtr();
+  const int* inner = A_.innerIndexPtr();
+  const double* val = A_.valuePtr();
+  const double* inv_d = inv_diag_.data();
+  // Work space kept between calls (no allocation, no page faults in the iterations).
+  R_.resize(n, 3);
+  P_.resize(n, 3);
+  Q_.resize(n, 3);
+  RowMatrixX3 &R = R_, &P = P_, &Q = Q_;
+
+  // r = b − A x, p = D⁻¹ r; sums: ‖b‖², r·D⁻¹r, ‖r‖².
+  const auto s0 = column_sums<3>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 3>& s) {
+    for (Eigen::Index i = i0; i < i1; ++i) {
+      double ax[3] = {0, 0, 0};
+      for (int j = outer[i]; j < outer[i + 1]; ++j)
+        for (int c = 0; c < 3; ++c) ax[c] += val[j] * X(inner[j], c);
+      for (int c = 0; c < 3; ++c) {
+        const double r = B(i, c) - ax[c], z = r * inv_d[i];
+        R(i, c) = r;
+        P(i, c) = z;
+        s[0][c] += B(i, c) * B(i, c);
+        s[1][c] += r * z;
+        s[2][c] += r * r;
+      }
+    }
+  });
+  Sums tol{}, rz = s0[1];
+  std::array<bool, 3> done{};
+  PcgStats stats;
+  for (int c = 0; c < 3; ++c) {
+    tol[c] = relative_tolerance * std::sqrt(s0[0][c]);
+    if (s0[0][c] == 0) {  // b = 0: the solution is 0
+      X.col(c).setZero();
+      done[c] = true;
+      continue;
+    }
+    done[c] = std::sqrt(s0[2][c]) <= tol[c];
+    if (!done[c]) stats.relative_residual = std::max(stats.relative_residual, std::sqrt(s0[2][c] / s0[0][c]));
+  }
+  auto all_done = [&] { return done[0] && done[1] && done[2]; };
+  for (int c = 0; c < 3; ++c)
+    if (done[c]) P.col(c).setZero();
+
+  int it = 0;
+  while (!all_done()) {
+    if (++it > max_iterations) {
+      std::ostringstream os;
+      os << what << ": conjugate gradients did not reach relative residual " << relative_tolerance << " in "
+         << max_iterations << " iterations (at " << stats.relative_residual << ")";
+      throw SolverError(os.str());
+    }
+    // q = A p, p·q.
+    const double* Pp = P.data();
+    double* Qp = Q.data();
+    const auto s1 = column_sums<1>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 1>& s) {
+      double s_0 = 0, s_1 = 0, s_2 = 0;
+      for (Eigen::Index i = i0; i < i1; ++i) {
+        double a0 = 0, a1 = 0, a2 = 0;
+        for (int j = outer[i]; j < outer[i + 1]; ++j) {
+          const double a = val[j];
+          const double* pj = Pp + 3 * static_cast<Eigen::Index>(inner[j]);
+          a0 += a * pj[0];
+          a1 += a * pj[1];
+          a2 += a * pj[2];
+        }
+        Qp[3 * i] = a0;
+        Qp[3 * i + 1] = a1;
+        Qp[3 * i + 2] = a2;
+        s_0 += Pp[3 * i] * a0;
+        s_1 += Pp[3 * i + 1] * a1;
+        s_2 += Pp[3 * i + 2] * a2;
+      }
+      s[0] = {s_0, s_1, s_2};
+    });
+    Sums alpha{};
+    for (int c = 0; c < 3; ++c) alpha[c] = done[c] ? 0.0 : rz[c] / s1[0][c];
+    // x += α p, r −= α q; sums: r·D⁻¹r, ‖r‖².
+    double* Xp = X.data();
+    double* Rp = R.data();
+    const auto s2 = column_sums<2>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 2>& s) {
+      double rz0 = 0, rz1 = 0, rz2 = 0, rr0 = 0, rr1 = 0, rr2 = 0;
+      for (Eigen::Index i = i0; i < i1; ++i) {
+        const Eigen::Index b = 3 * i;
+        Xp[b] += alpha[0] * Pp[b];
+        Xp[b + 1] += alpha[1] * Pp[b + 1];
+        Xp[b + 2] += alpha[2] * Pp[b + 2];
+        const double r0 = Rp[b] - alpha[0] * Qp[b], r1 = Rp[b + 1] - alpha[1] * Qp[b + 1],
+                     r2 = Rp[b + 2] - alpha[2] * Qp[b + 2];
+        Rp[b] = r0;
+        Rp[b + 1] = r1;
+        Rp[b + 2] = r2;
+        const double di = inv_d[i];
+        rz0 += r0 * r0 * di;
+        rz1 += r1 * r1 * di;
+        rz2 += r2 * r2 * di;
+        rr0 += r0 * r0;
+        rr1 += r1 * r1;
+        rr2 += r2 * r2;
+      }
+      s[0] = {rz0, rz1, rz2};
+      s[1] = {rr0, rr1, rr2};
+    });
+    Sums beta{};
+    stats.relative_residual = 0;
+    for (int c = 0; c < 3; ++c) {
+      if (done[c]) continue;
+      if (!std::isfinite(s2[1][c]) || !std::isfinite(alpha[c]))
+        throw SolverError(what + ": conjugate gradients broke down (non-finite values)");
+      const double res = std::sqrt(s2[1][c]);
+      stats.relative_residual = std::max(stats.relative_residual, res / std::sqrt(s0[0][c]));
+      if (res <= tol[c]) {
+        done[c] = true;
+      } else {
+        beta[c] = s2[0][c] / rz[c];
+        rz[c] = s2[0][c];
+      }
+    }
+    if (all_done()) break;
+    // p = D⁻¹ r + β p (0 for the columns that are done).
+    Sums keep{};
+    for (int c = 0; c < 3; ++c) keep[c] = done[c] ? 0.0 : 1.0;
+    double* Pw = P.data();
+    parallel_for(n, [&](Eigen::Index i) {
+      const double di = inv_d[i];
+      for (int c = 0; c < 3; ++c) Pw[3 * i + c] = keep[c] * (Rp[3 * i + c] * di + beta[c] * Pw[3 * i + c]);
+    });
+  }
+  stats.iterations = it;
+  return stats;
+}
+
+}  // namespace msmesh::detail

@@ -1,0 +1,47 @@
+// Internal: Jacobi-preconditioned conjugate gradients for the constant SPD systems, several
+// right-hand sides at once (the three coordinates of the N-step or the vertex update).
+//
+// Why: the N-step matrix 2αS + r GᵀLG is a face-graph Laplacian plus a positive diagonal, so
+// its condition number is bounded independently of the mesh size (κ ≈ 1 + 3r/(α·area) in mean
+// edge units): warm-started from the previous iterate, CG needs a bounded number of sweeps
+// and the cost grows linearly with the face count, where a sparse Cholesky factor grows like
+// n^1.5 (docs/performance.md has the measurements).
+//
+// Deterministic whatever the thread count: the matrix–vector products are row-parallel and
+// every reduction sums fixed blocks of rows in a fixed order.
+#pragma once
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <string>
+
+namespace msmesh::detail {
+
+using RowSparse = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
+using RowMatrixX3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+struct PcgStats {
+  int iterations = 0;              ///< sweeps of the slowest column
+  double relative_residual = 0.0;  ///< max over the columns of ‖b − Ax‖ / ‖b‖
+};
+
+class BlockPcg {
+ public:
+  /// `A` must be symmetric positive definite with a positive diagonal.
+  explicit BlockPcg(const Eigen::SparseMatrix<double>& A);
+  /// Solves A X = B (n by 3) in place, X holding the warm start. Stops when every column's
+  /// residual is below `relative_tolerance` × ‖b‖ (or exactly 0). Throws SolverError naming
+  /// `what` when `max_iterations` do not suffice or the numbers stop being finite.
+  PcgStats solve(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance, int max_iterations,
+                 const std::string& what) const;
+  Eigen::Index size() const { return A_.rows(); }
+
+ private:
+  RowSparse A_;
+  Eigen::VectorXd inv_diag_;
+  mutable RowMatrixX3 R_, P_, Q_;  // work space (not thread-safe: one solve at a time)
+};
+
+/// Copies between Eigen's default column-major #rows by 3 matrices and the row-major layout.
+RowMatrixX3 to_rows(const Eigen::MatrixXd& M);
+
+}  // namespace msmesh::detail

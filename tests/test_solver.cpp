@@ -1,0 +1,140 @@
+// The two solvers of the constant systems (Cholesky factorisation and warm-started
+// conjugate gradients) give the same filtered normals and vertices, and the parallel loops
+// give bit-identical results whatever the number of threads.
+#include <gtest/gtest.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "msmesh/denoise.h"
+#include "msmesh/errors.h"
+#include "msmesh/geometry.h"
+#include "msmesh/noise.h"
+#include "msmesh/shapes.h"
+#include "test_helpers.h"
+
+using namespace msmesh;
+
+namespace {
+
+Mesh noisy_cube(int n, double sigma = 0.2) {
+  Mesh m = make_cube(n);
+  NoiseOptions no;
+  no.sigma = sigma;
+  no.seed = 7;
+  m.V = add_noise(m.V, m.F, no);
+  return m;
+}
+
+NormalFilterResult filter_with(const Mesh& m, LinearSolver s, const char* preset = "cad") {
+  NormalFilterOptions o = preset_options(preset).normals;
+  o.solver = s;
+  o.tolerance = 0;
+  return filter_normals(m.V, m.F, o);
+}
+
+}  // namespace
+
+TEST(Solver, ConjugateGradientsMatchCholeskyInTheNormalFilter) {
+  const Mesh m = noisy_cube(8);
+  for (const char* preset : {"cad", "smooth"}) {
+    const NormalFilterResult a = filter_with(m, LinearSolver::Cholesky, preset);
+    const NormalFilterResult b = filter_with(m, LinearSolver::CG, preset);
+    EXPECT_TRUE(a.n_solver_iterations.empty());
+    ASSERT_EQ(b.n_solver_iterations.size(), 30u);
+    for (int it : b.n_solver_iterations) {
+      EXPECT_GT(it, 0);
+      EXPECT_LT(it, 60);  // bounded: the N-step matrix is well conditioned at any size
+    }
+    EXPECT_LT((a.normals - b.normals).cwiseAbs().maxCoeff(), 1e-6) << preset;
+    EXPECT_LT((a.v - b.v).cwiseAbs().maxCoeff(), 1e-6) << preset;
+  }
+  // Auto is conjugate gradients for plain denoising.
+  EXPECT_FALSE(filter_with(m, LinearSolver::Auto).n_solver_iterations.empty());
+}
+
+TEST(Solver, TighterToleranceApproachesTheFactorisation) {
+  const Mesh m = noisy_cube(6);
+  const NormalFilterResult exact = filter_with(m, LinearSolver::Cholesky);
+  double previous = 1e300;
+  for (double tol : {1e-4, 1e-7, 1e-11}) {
+    NormalFilterOptions o = preset_options("cad").normals;
+    o.solver = LinearSolver::CG;
+    o.solver_tolerance = tol;
+    o.tolerance = 0;
+    const double err = (filter_normals(m.V, m.F, o).normals - exact.normals).cwiseAbs().maxCoeff();
+    EXPECT_LT(err, previous * 1.01 + 1e-13) << tol;
+    previous = err;
+  }
+  EXPECT_LT(previous, 1e-9);
+}
+
+TEST(Solver, ConjugateGradientsMatchCholeskyInTheVertexUpdate) {
+  const Mesh m = noisy_cube(8);
+  const Mesh clean = make_cube(8);
+  const Eigen::MatrixXd N = face_normals(clean.V, clean.F);
+  for (const char* preset : {"cad", "smooth"}) {
+    VertexUpdateOptions o = preset_options(preset).vertices;
+    o.tolerance = 0;
+    o.solver = LinearSolver::Cholesky;
+    const VertexUpdateResult a = update_vertices(m.V, m.F, N, {}, o);
+    o.solver = LinearSolver::CG;
+    const VertexUpdateResult b = update_vertices(m.V, m.F, N, {}, o);
+    ASSERT_EQ(b.solver_iterations.size(), 30u);
+    const double edge = 2.0 / 8;
+    EXPECT_LT((a.V - b.V).cwiseAbs().maxCoeff(), 1e-6 * edge) << preset;
+    EXPECT_EQ(a.fallback_projections, b.fallback_projections);
+  }
+}
+
+TEST(Solver, AutoFactorsWhenWeightsSwitchTheDataTermOff) {
+  // Inpainting gives new vertices ω₃ ≈ 0: the system is then badly conditioned and Auto
+  // factors it; with plain weights Auto uses conjugate gradients.
+  const Mesh m = noisy_cube(4);
+  const Eigen::MatrixXd N = face_normals(make_cube(4).V, m.F);
+  VertexUpdateOptions o;
+  VertexUpdateWeights w;
+  w.vertex_omega3 = Eigen::VectorXd::Ones(m.V.rows());
+  EXPECT_FALSE(update_vertices(m.V, m.F, N, {}, o, w).solver_iterations.empty());
+  w.vertex_omega3(0) = 0;
+  EXPECT_TRUE(update_vertices(m.V, m.F, N, {}, o, w).solver_iterations.empty());
+}
+
+TEST(Solver, BadSolverToleranceIsRejectedWithItsRange) {
+  const Mesh m = noisy_cube(2);
+  NormalFilterOptions o;
+  o.solver_tolerance = 0;
+  try {
+    filter_normals(m.V, m.F, o);
+    FAIL() << "accepted solver_tolerance 0";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("solver_tolerance"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("(0, 1)"), std::string::npos);
+  }
+  VertexUpdateOptions vo;
+  vo.solver_tolerance = 2;
+  EXPECT_THROW(update_vertices(m.V, m.F, face_normals(m.V, m.F), {}, vo), InvalidInput);
+}
+
+TEST(Solver, ResultsDoNotDependOnTheThreadCount) {
+#ifndef _OPENMP
+  GTEST_SKIP() << "built without OpenMP";
+#else
+  // Large enough for the loops to run in parallel (more than 8192 rows).
+  const Mesh m = noisy_cube(30);
+  ASSERT_GT(m.F.rows(), 10000);
+  const int threads = omp_get_max_threads();
+  DenoiseOptions o = preset_options("cad");
+  o.normals.max_iterations = 5;
+  o.vertices.max_iterations = 5;
+  omp_set_num_threads(1);
+  const DenoiseResult one = denoise(m.V, m.F, o);
+  omp_set_num_threads(std::max(2, threads));
+  const DenoiseResult many = denoise(m.V, m.F, o);
+  omp_set_num_threads(threads);
+  EXPECT_EQ(one.V, many.V);  // bit for bit
+  EXPECT_EQ(one.normals, many.normals);
+  EXPECT_EQ(one.v, many.v);
+#endif
+}
