@@ -1,11 +1,29 @@
 // msmesh: command-line front end. Every subcommand lives in its own cmd_*.cpp.
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdlib>
 #include <iostream>
 
 #include "command.h"
 #include "msmesh/errors.h"
 
+namespace {
+
+// OpenMP threads that wait at a barrier spin by default. On a busy machine (another build,
+// another msmesh) a spinning thread holds a core the working thread needs, and a 1 s job can
+// take 10 s (docs/performance.md). libgomp reads OMP_WAIT_POLICY once, when it is loaded, so
+// when the user has not chosen a policy msmesh restarts itself once with "passive" set.
+void prefer_passive_openmp_waits(char** argv) {
+  if (std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr) return;
+  if (setenv("OMP_WAIT_POLICY", "passive", 1) != 0) return;
+  execv("/proc/self/exe", argv);  // returns only on failure: then carry on as we are
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  prefer_passive_openmp_waits(argv);
   CLI::App app{
       "msmesh: feature-preserving mesh processing with a Mumford-Shah model on face normals\n"
       "(denoising, inpainting, segmentation; Liu et al. 2022, NMSTV)."};
