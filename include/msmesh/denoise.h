@@ -61,6 +61,11 @@ struct DenoiseResult {
   double seconds_normals = 0, seconds_vertices = 0;
 };
 
+/// A lower estimate of the peak memory (bytes) denoise() needs for a mesh of this size,
+/// measured on meshes of 4·10^4 and 2.6·10^5 faces (docs/robustness.md). denoise() refuses to start
+/// (InvalidInput) when it exceeds the available memory (msmesh/memory.h).
+double denoise_memory_estimate(Eigen::Index num_vertices, Eigen::Index num_faces, const DenoiseOptions& options = {});
+
 /// Denoises (V, F): #V by 3, #F by 3. Results do not depend on the mesh's scale, position or
 /// orientation. Throws InvalidInput, SolverError or Cancelled.
 DenoiseResult denoise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const DenoiseOptions& options = {},
