@@ -8,7 +8,9 @@
 #include "json.h"
 #include "msmesh/denoise.h"
 #include "msmesh/errors.h"
+#include "msmesh/geometry.h"
 #include "msmesh/io.h"
+#include "msmesh/memory.h"
 #include "msmesh/metrics.h"
 #include "msmesh/topology.h"
 #include "report.h"
@@ -38,7 +40,8 @@ struct Overrides {
 void run(const Args& a, const Overrides& ov) {
   check_not_overwriting_input(a.input, a.output, a.in_place);
   const auto t_read0 = std::chrono::steady_clock::now();
-  Mesh mesh = read_mesh(a.input);
+  ReadNotes notes;
+  Mesh mesh = read_mesh(a.input, notes);
   const double t_read = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_read0).count();
 
   std::string preset = a.preset;
@@ -74,14 +77,17 @@ void run(const Args& a, const Overrides& ov) {
   if (ov.given("--sigma-s")) o.bilateral.sigma_s = a.sigma_s;
   if (ov.given("--bilateral-iterations")) o.bilateral.normal_iterations = a.bilateral_iterations;
   o.validate();
+  check_memory(denoise_memory_estimate(mesh.V.rows(), mesh.F.rows(), o), a.input + ": denoising " +
+               std::to_string(mesh.V.rows()) + " vertices and " + std::to_string(mesh.F.rows()) + " faces");
 
   Mesh truth;
   if (!a.truth.empty()) truth = read_mesh(a.truth);
 
   const DenoiseResult r = denoise(mesh.V, mesh.F, o, make_progress_bar(a.quiet || a.json));
   finish_progress_line();
-  Mesh out = mesh;
+  Mesh out = mesh;  // same faces, order, colours and uv; normals recomputed for the result
   out.V = r.V;
+  if (mesh.vertex_normals.size() > 0) out.vertex_normals = vertex_normals(out.V, out.F);
   const auto t_w0 = std::chrono::steady_clock::now();
   WriteOptions wo;
   wo.binary = !a.ascii;
@@ -106,6 +112,7 @@ void run(const Args& a, const Overrides& ov) {
     if (a.preset == "auto")
       j.add("auto_sharp_fraction", choice.sharp_fraction).add("auto_flat_fraction", choice.flat_fraction);
     j.add("vertices", static_cast<long long>(mesh.V.rows())).add("faces", static_cast<long long>(mesh.F.rows()));
+    j.add("dropped_degenerate_faces", static_cast<long long>(notes.dropped_degenerate));
     Json params;
     params.add("alpha", o.normals.alpha).add("beta", o.normals.beta).add("gamma", o.normals.gamma)
         .add("rho", o.normals.rho).add("epsilon", o.normals.epsilon).add("omega1", o.vertices.omega1)
@@ -134,6 +141,10 @@ void run(const Args& a, const Overrides& ov) {
   }
   std::cout << "denoised " << a.input << " -> " << a.output << " (" << mesh.V.rows() << " vertices, "
             << mesh.F.rows() << " faces)\n";
+  if (notes.dropped_degenerate > 0)
+    std::cout << "  note: " << notes.dropped_degenerate << " face(s) repeating a vertex were dropped on reading\n";
+  if (notes.uv_dropped)
+    std::cout << "  note: the input's texture coordinates have seams (not per-vertex) and were not carried over\n";
   std::cout << "  method " << a.method;
   if (o.method != DenoiseMethod::Bilateral) {
     std::cout << ", preset " << preset;

@@ -25,8 +25,9 @@ constexpr std::size_t kLargestLoops = 5;
 std::string join_vector(const Eigen::RowVector3d& v) { return fmt(v(0), 6) + " " + fmt(v(1), 6) + " " + fmt(v(2), 6); }
 
 void run(const Args& a) {
-  Eigen::Index dropped = 0;
-  const Mesh mesh = read_mesh(a.input, &dropped);
+  ReadNotes notes;
+  const Mesh mesh = read_mesh(a.input, notes);
+  const Eigen::Index dropped = notes.dropped_degenerate;
   const Topology topo = build_topology(mesh.F, mesh.V.rows());
   const TopologySummary s = summarize_topology(mesh.F, topo);
   const double mean_edge = mean_edge_length(mesh.V, mesh.F);
@@ -61,7 +62,10 @@ void run(const Args& a) {
         .add("bbox_max", vec(bb_max))
         .add("bbox_diagonal", diagonal)
         .add("dropped_degenerate_faces", static_cast<long long>(dropped))
-        .add("vertex_colors", mesh.vertex_colors.size() > 0);
+        .add("vertex_colors", mesh.vertex_colors.size() > 0)
+        .add("texture_coordinates", mesh.uv.size() > 0)
+        .add("texture_coordinates_with_seams", notes.uv_dropped)
+        .add("vertex_normals", notes.had_normals);
     std::cout << j.str() << "\n";
     return;
   }
@@ -89,6 +93,9 @@ void run(const Args& a) {
             << "  bounding box diagonal:         " << fmt(diagonal, 6) << "\n"
             << "  dropped degenerate faces:      " << dropped << "\n";
   if (mesh.vertex_colors.size() > 0) std::cout << "  vertex colours:                yes\n";
+  if (mesh.uv.size() > 0) std::cout << "  texture coordinates:           yes (per vertex)\n";
+  if (notes.uv_dropped) std::cout << "  texture coordinates:           with seams (per corner): not read, not carried over\n";
+  if (notes.had_normals) std::cout << "  vertex normals:                yes (recomputed when vertices move)\n";
 }
 
 const Registrar reg("info", 10, [](CLI::App& app) {

@@ -9,6 +9,7 @@
 #include "json.h"
 #include "msmesh/errors.h"
 #include "msmesh/inpaint.h"
+#include "msmesh/geometry.h"
 #include "msmesh/io.h"
 #include "report.h"
 
@@ -150,6 +151,7 @@ void run(const Args& a, const Given& given) {
     if (added > 0) out.vertex_colors.bottomRows(added).rowwise() = mesh.vertex_colors.colwise().mean();
   }
   if (added == 0) out.uv = mesh.uv;
+  if (mesh.vertex_normals.size() > 0) out.vertex_normals = vertex_normals(out.V, out.F);
   WriteOptions wo;
   wo.binary = !a.ascii;
   write_mesh(a.output, out, wo);

@@ -29,6 +29,7 @@ void run(const Args& a) {
   for (Eigen::Index i = 0; i < V.rows(); ++i) moved += V.row(i) != mesh.V.row(i) ? 1 : 0;
   const double l = mean_edge_length(mesh.V, mesh.F);
   mesh.V = V;
+  if (mesh.vertex_normals.size() > 0) mesh.vertex_normals = vertex_normals(mesh.V, mesh.F);  // match the result
   WriteOptions wo;
   wo.binary = !a.ascii;
   write_mesh(a.output, mesh, wo);

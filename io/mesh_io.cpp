@@ -27,6 +27,7 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <climits>
 #include <cmath>
@@ -44,7 +45,9 @@
 #include <vector>
 
 #include "msmesh/errors.h"
+#include "msmesh/geometry.h"
 #include "msmesh/io.h"
+#include "msmesh/memory.h"
 
 namespace msmesh {
 namespace {
@@ -113,6 +116,12 @@ struct Soup {
   std::vector<Point> points;
   std::vector<Polygon> polygons;
   std::vector<CGAL::IO::Color> vertex_colors;
+  // Per-vertex attributes CGAL's soup readers drop, read by read_obj_attributes and
+  // read_ply_attributes (empty when absent or not per-vertex).
+  std::vector<std::array<double, 3>> rgb;      ///< OBJ "v x y z r g b" colours in [0,1]
+  std::vector<std::array<double, 2>> uv;
+  std::vector<std::array<double, 3>> normals;
+  ReadNotes notes;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -159,6 +168,8 @@ std::string read_whole_file(const std::string& path) {
   const std::streamoff size = in.tellg();
   if (size < 0) throw IoError(path + ": cannot determine the file size");
   in.seekg(0, std::ios::beg);
+  // The file, CGAL's polygon soup and the mesh: about four times the size of a binary file.
+  check_memory(4.0 * static_cast<double>(size), path + ": reading a " + std::to_string(size) + "-byte file");
   std::string data(static_cast<std::size_t>(size), '\0');
   if (size > 0 && !in.read(data.data(), size)) throw IoError(path + ": read error");
   return data;
@@ -291,6 +302,122 @@ std::string without_unknown_obj_records(std::string_view data) {
   return kept;
 }
 
+/// Vertex colours ("v x y z r g b"), texture coordinates and normals of an OBJ file as
+/// per-vertex arrays. Per-corner values ("f v/vt/vn") become per-vertex when every corner of a
+/// vertex names the same value; otherwise (seams) they are dropped and noted.
+void read_obj_attributes(std::string_view data, Soup& soup) {
+  const std::size_t nv = soup.points.size();
+  std::vector<std::array<double, 3>> rgb, vn;
+  std::vector<std::array<double, 2>> vt;
+  bool all_rgb = true;
+  std::size_t vertices = 0;
+  // Per vertex: the vt / vn index its corners name (-1 none yet, -2 conflicting).
+  std::vector<long long> vertex_vt(nv, -1), vertex_vn(nv, -1);
+  bool corners_without_vt = false, corners_without_vn = false, any_vt = false, any_vn = false;
+  auto resolve = [](long long idx, std::size_t count) -> long long {  // 1-based / negative -> 0-based
+    if (idx > 0) return idx - 1;
+    if (idx < 0) return static_cast<long long>(count) + idx;
+    return -1;
+  };
+  auto assign = [](std::vector<long long>& slot, std::size_t v, long long idx) {
+    if (slot[v] == -1) slot[v] = idx;
+    else if (slot[v] != idx) slot[v] = -2;
+  };
+  for (const std::string_view line : split_lines(data)) {
+    const auto w = split_words(line);
+    if (w.empty()) continue;
+    if (w[0] == "v") {
+      ++vertices;
+      if (w.size() >= 7) {
+        std::array<double, 3> c{};
+        for (int k = 0; k < 3; ++k) {
+          const auto x = parse_double(w[4 + k]);
+          if (!x || !std::isfinite(*x)) all_rgb = false;
+          c[k] = x ? *x : 0.0;
+        }
+        rgb.push_back(c);
+      } else {
+        all_rgb = false;
+      }
+    } else if (w[0] == "vt" && w.size() >= 2) {
+      const auto u = parse_double(w[1]);
+      const auto v = w.size() >= 3 ? parse_double(w[2]) : std::optional<double>(0.0);
+      vt.push_back({u ? *u : 0.0, v ? *v : 0.0});
+    } else if (w[0] == "vn" && w.size() >= 4) {
+      std::array<double, 3> n{};
+      for (int k = 0; k < 3; ++k) {
+        const auto x = parse_double(w[1 + k]);
+        n[k] = x ? *x : 0.0;
+      }
+      vn.push_back(n);
+    } else if (w[0] == "f") {
+      for (std::size_t k = 1; k < w.size(); ++k) {
+        const std::string_view corner = w[k];
+        const std::size_t s1 = corner.find('/');
+        const auto vi = parse_integer(corner.substr(0, s1));
+        if (!vi) continue;
+        const long long v = resolve(*vi, vertices);
+        if (v < 0 || static_cast<std::size_t>(v) >= nv) continue;
+        std::string_view t, n;
+        if (s1 != std::string_view::npos) {
+          const std::size_t s2 = corner.find('/', s1 + 1);
+          t = corner.substr(s1 + 1, s2 == std::string_view::npos ? std::string_view::npos : s2 - s1 - 1);
+          if (s2 != std::string_view::npos) n = corner.substr(s2 + 1);
+        }
+        const auto ti = t.empty() ? std::nullopt : parse_integer(t);
+        const auto ni = n.empty() ? std::nullopt : parse_integer(n);
+        if (ti) {
+          any_vt = true;
+          const long long r = resolve(*ti, vt.size());
+          assign(vertex_vt, static_cast<std::size_t>(v), r >= 0 && static_cast<std::size_t>(r) < vt.size() ? r : -2);
+        } else {
+          corners_without_vt = true;
+        }
+        if (ni) {
+          any_vn = true;
+          const long long r = resolve(*ni, vn.size());
+          assign(vertex_vn, static_cast<std::size_t>(v), r >= 0 && static_cast<std::size_t>(r) < vn.size() ? r : -2);
+        } else {
+          corners_without_vn = true;
+        }
+      }
+    }
+  }
+  if (all_rgb && rgb.size() == nv && nv > 0) {
+    double top = 0;
+    for (const auto& c : rgb)
+      for (double x : c) top = std::max(top, x);
+    const double scale = top > 1.0 ? 1.0 / 255.0 : 1.0;  // some exporters write 0..255
+    for (auto& c : rgb)
+      for (double& x : c) x = std::clamp(x * scale, 0.0, 1.0);
+    soup.rgb = std::move(rgb);
+  }
+  // A vertex no face refers to takes the texture coordinate / normal of the same index when
+  // there is one (files that list them in step with the vertices), else 0.
+  auto per_vertex = [&](std::vector<long long>& slot, std::size_t count) {
+    for (std::size_t v = 0; v < nv; ++v)
+      if (slot[v] == -1) slot[v] = v < count ? static_cast<long long>(v) : -3;
+    return std::none_of(slot.begin(), slot.end(), [](long long x) { return x == -2; });
+  };
+  if (any_vt) {
+    if (corners_without_vt || !per_vertex(vertex_vt, vt.size())) {
+      soup.notes.uv_dropped = true;
+    } else {
+      soup.uv.resize(nv, {0.0, 0.0});
+      for (std::size_t v = 0; v < nv; ++v)
+        if (vertex_vt[v] >= 0) soup.uv[v] = vt[static_cast<std::size_t>(vertex_vt[v])];
+    }
+  }
+  if (any_vn) {
+    soup.notes.had_normals = true;
+    if (!corners_without_vn && per_vertex(vertex_vn, vn.size())) {
+      soup.normals.resize(nv, {0.0, 0.0, 0.0});
+      for (std::size_t v = 0; v < nv; ++v)
+        if (vertex_vn[v] >= 0) soup.normals[v] = vn[static_cast<std::size_t>(vertex_vn[v])];
+    }
+  }
+}
+
 void read_obj(const std::string& path, std::string_view data, Soup& soup) {
   {
     std::size_t v = 0, f = 0;
@@ -322,6 +449,7 @@ void read_obj(const std::string& path, std::string_view data, Soup& soup) {
   for (const Polygon& poly : soup.polygons)
     for (std::size_t idx : poly)
       if (idx >= soup.points.size()) throw IoError(path + ": " + diagnose_obj(data));
+  read_obj_attributes(data, soup);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -528,6 +656,7 @@ void read_off(const std::string& path, std::string_view data, Soup& soup) {
     throw IoError(path + ": " + problem);
   }
   soup.vertex_colors = std::move(colors);
+  soup.notes.had_normals = h.normals;  // NOFF: recomputed (OFF output has no normals)
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -742,6 +871,126 @@ void check_ply_list_counts(const std::string& path, std::string_view data, const
       }
 }
 
+/// Texture coordinates (texture_u/texture_v, u/v, s/t, texture_s/texture_t) and normals
+/// (nx/ny/nz) of the PLY vertex element, which CGAL's soup reader skips. Walks the body up to
+/// the end of the vertex element; gives up silently (no attributes) if it runs out of data.
+void read_ply_attributes(std::string_view data, const PlyHeader& h, Soup& soup) {
+  std::size_t vertex_element = h.elements.size();
+  for (std::size_t k = 0; k < h.elements.size(); ++k)
+    if (h.elements[k].name == "vertex" || h.elements[k].name == "vertices") {
+      vertex_element = k;
+      break;
+    }
+  if (vertex_element == h.elements.size()) return;
+  const PlyElement& ve = h.elements[vertex_element];
+  static const char* const uv_names[][2] = {{"texture_u", "texture_v"}, {"u", "v"}, {"s", "t"}, {"texture_s", "texture_t"}};
+  int iu = -1, iv = -1, inx = -1, iny = -1, inz = -1;
+  for (const auto& names : uv_names) {
+    int a = -1, b = -1;
+    for (std::size_t p = 0; p < ve.properties.size(); ++p) {
+      if (ve.properties[p].is_list) continue;
+      if (ve.properties[p].name == names[0]) a = static_cast<int>(p);
+      if (ve.properties[p].name == names[1]) b = static_cast<int>(p);
+    }
+    if (a >= 0 && b >= 0) {
+      iu = a, iv = b;
+      break;
+    }
+  }
+  for (std::size_t p = 0; p < ve.properties.size(); ++p) {
+    if (ve.properties[p].is_list) continue;
+    if (ve.properties[p].name == "nx") inx = static_cast<int>(p);
+    if (ve.properties[p].name == "ny") iny = static_cast<int>(p);
+    if (ve.properties[p].name == "nz") inz = static_cast<int>(p);
+  }
+  const bool want_uv = iu >= 0, want_n = inx >= 0 && iny >= 0 && inz >= 0;
+  if (!want_uv && !want_n) return;
+  if (ve.count != soup.points.size()) return;
+
+  const std::size_t size = data.size();
+  std::size_t pos = h.body_offset;
+  const bool ascii = h.format == PlyHeader::Ascii, big = h.format == PlyHeader::BinaryBigEndian;
+  bool ok = true;
+  auto next_word = [&]() -> std::string_view {
+    while (pos < size && std::isspace(static_cast<unsigned char>(data[pos]))) ++pos;
+    const std::size_t start = pos;
+    while (pos < size && !std::isspace(static_cast<unsigned char>(data[pos]))) ++pos;
+    return data.substr(start, pos - start);
+  };
+  auto read_value = [&](const std::string& type, int bytes) -> double {
+    if (!ok) return 0;
+    if (ascii) {
+      const std::string_view w = next_word();
+      const auto x = parse_double(w);
+      if (!x) ok = false;
+      return x ? *x : 0.0;
+    }
+    if (size - pos < static_cast<std::size_t>(bytes) || pos > size) {
+      ok = false;
+      return 0;
+    }
+    unsigned char b[8];
+    for (int i = 0; i < bytes; ++i) b[big ? bytes - 1 - i : i] = static_cast<unsigned char>(data[pos + i]);
+    pos += bytes;
+    // b holds the value in little-endian order; assemble it for this (little-endian) host.
+    std::uint64_t u = 0;
+    for (int i = 0; i < bytes; ++i) u |= std::uint64_t(b[i]) << (8 * i);
+    if (type == "float" || type == "float32") {
+      float f;
+      const std::uint32_t u32 = static_cast<std::uint32_t>(u);
+      std::memcpy(&f, &u32, 4);
+      return f;
+    }
+    if (type == "double" || type == "float64") {
+      double d;
+      std::memcpy(&d, &u, 8);
+      return d;
+    }
+    const bool is_signed = type == "char" || type == "int8" || type == "short" || type == "int16" || type == "int" ||
+                           type == "int32";
+    if (is_signed) {
+      const int shift = 64 - 8 * bytes;
+      return static_cast<double>(static_cast<std::int64_t>(u << shift) >> shift);
+    }
+    return static_cast<double>(u);
+  };
+  std::vector<std::array<double, 2>> uv;
+  std::vector<std::array<double, 3>> normals;
+  if (want_uv) uv.resize(ve.count);
+  if (want_n) normals.resize(ve.count);
+  for (std::size_t k = 0; k <= vertex_element && ok; ++k) {
+    const PlyElement& e = h.elements[k];
+    for (unsigned long long j = 0; j < e.count && ok; ++j)
+      for (std::size_t p = 0; p < e.properties.size() && ok; ++p) {
+        const PlyProperty& prop = e.properties[p];
+        if (prop.is_list) {
+          const double n = read_value(prop.count_type, prop.count_size);
+          if (!(n >= 0) || n > double(size)) ok = false;
+          for (long long i = 0; ok && i < static_cast<long long>(n); ++i) read_value(prop.type, prop.size);
+          continue;
+        }
+        const double x = read_value(prop.type, prop.size);
+        if (k != vertex_element) continue;
+        const int pi = static_cast<int>(p);
+        if (pi == iu) uv[j][0] = x;
+        if (pi == iv) uv[j][1] = x;
+        if (pi == inx) normals[j][0] = x;
+        if (pi == iny) normals[j][1] = x;
+        if (pi == inz) normals[j][2] = x;
+      }
+  }
+  if (!ok) return;
+  auto finite2 = [](const std::array<double, 2>& a) { return std::isfinite(a[0]) && std::isfinite(a[1]); };
+  auto finite3 = [](const std::array<double, 3>& a) {
+    return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
+  };
+  if (want_uv && std::all_of(uv.begin(), uv.end(), finite2)) soup.uv = std::move(uv);
+  if (want_n) {
+    soup.notes.had_normals = true;
+    if (std::all_of(normals.begin(), normals.end(), finite3)) soup.normals = std::move(normals);
+  }
+}
+
 void read_ply(const std::string& path, std::string_view data, Soup& soup) {
   const PlyHeader h = parse_ply_header(path, data);
   check_ply_list_counts(path, data, h);
@@ -756,10 +1005,19 @@ void read_ply(const std::string& path, std::string_view data, Soup& soup) {
                                      CGAL::parameters::vertex_color_output_iterator(std::back_inserter(colors))
                                          .face_color_output_iterator(std::back_inserter(face_colors))
                                          .verbose(false));
+  if (!ok && h.format == PlyHeader::Ascii) {
+    // CGAL's ascii parse stops at words like "nan" or "inf"; say so.
+    const auto words = split_words(data.substr(h.body_offset));
+    for (const std::string_view w : words) {
+      const auto x = parse_double(w);
+      if (x && !std::isfinite(*x)) throw IoError(path + ": non-finite value " + quote_word(w) + " in the ascii PLY body");
+    }
+  }
   if (!ok)
     throw IoError(path + (h.format == PlyHeader::Ascii ? ": malformed or truncated ascii PLY body (CGAL's reader failed)"
                                                        : ": malformed or truncated binary PLY body (CGAL's reader failed)"));
   soup.vertex_colors = std::move(colors);
+  read_ply_attributes(data, h, soup);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -876,6 +1134,19 @@ Mesh soup_to_mesh(const std::string& path, const Soup& soup, Eigen::Index* dropp
       mesh.vertex_colors.row(static_cast<Eigen::Index>(i)) << col.red() / 255.0, col.green() / 255.0, col.blue() / 255.0;
     }
   }
+  auto fill = [&](Eigen::MatrixXd& M, const auto& rows) {
+    if (rows.size() != nv) return;
+    const Eigen::Index cols = static_cast<Eigen::Index>(rows.front().size());
+    M.resize(static_cast<Eigen::Index>(nv), cols);
+    for (std::size_t i = 0; i < nv; ++i)
+      for (Eigen::Index c = 0; c < cols; ++c) M(static_cast<Eigen::Index>(i), c) = rows[i][static_cast<std::size_t>(c)];
+  };
+  if (mesh.vertex_colors.size() == 0) fill(mesh.vertex_colors, soup.rgb);
+  fill(mesh.uv, soup.uv);
+  fill(mesh.vertex_normals, soup.normals);
+  // Normals that are not per-vertex (split at creases) are replaced by recomputed ones.
+  if (soup.notes.had_normals && mesh.vertex_normals.size() == 0 && soup.normals.empty())
+    mesh.vertex_normals = vertex_normals(mesh.V, mesh.F);
   if (dropped_degenerate) *dropped_degenerate = dropped;
   return mesh;
 }
@@ -891,13 +1162,28 @@ std::string mesh_format_from_path(const std::string& path) {
 }
 
 Mesh read_mesh(const std::string& path, Eigen::Index* dropped_degenerate) {
+  ReadNotes notes;
+  Mesh mesh = read_mesh(path, notes);
+  if (dropped_degenerate) *dropped_degenerate = notes.dropped_degenerate;
+  return mesh;
+}
+
+Mesh read_mesh(const std::string& path, ReadNotes& notes) {
   const std::string format = mesh_format_from_path(path);
   const std::string data = read_whole_file(path);
-  return read_mesh_from_memory(data, format, path, dropped_degenerate);
+  return read_mesh_from_memory(data, format, path, notes);
 }
 
 Mesh read_mesh_from_memory(std::string_view data, const std::string& format, const std::string& path,
                            Eigen::Index* dropped_degenerate) {
+  ReadNotes notes;
+  Mesh mesh = read_mesh_from_memory(data, format, path, notes);
+  if (dropped_degenerate) *dropped_degenerate = notes.dropped_degenerate;
+  return mesh;
+}
+
+Mesh read_mesh_from_memory(std::string_view data, const std::string& format, const std::string& path,
+                           ReadNotes& notes) {
   if (format != "obj" && format != "off" && format != "ply" && format != "stl")
     throw IoError(path + ": unknown mesh format " + quote_word(format) + "; expected obj, off, ply or stl");
   if (data.empty()) throw IoError(path + ": empty file");
@@ -924,7 +1210,10 @@ Mesh read_mesh_from_memory(std::string_view data, const std::string& format, con
   } catch (const std::exception& e) {
     throw IoError(path + ": reading failed: " + e.what());
   }
-  return soup_to_mesh(path, soup, dropped_degenerate);
+  Mesh mesh = soup_to_mesh(path, soup, &notes.dropped_degenerate);
+  notes.had_normals = soup.notes.had_normals;
+  notes.uv_dropped = soup.notes.uv_dropped;
+  return mesh;
 }
 
 }  // namespace msmesh

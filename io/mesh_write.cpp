@@ -101,6 +101,8 @@ void check_for_writing(const std::string& path, const Mesh& mesh) {
   if (mesh.vertex_colors.size() > 0 && (mesh.vertex_colors.rows() != V.rows() || mesh.vertex_colors.cols() != 3))
     fail("vertex_colors must be empty or #V by 3");
   if (mesh.uv.size() > 0 && (mesh.uv.rows() != V.rows() || mesh.uv.cols() != 2)) fail("uv must be empty or #V by 2");
+  if (mesh.vertex_normals.size() > 0 && (mesh.vertex_normals.rows() != V.rows() || mesh.vertex_normals.cols() != 3))
+    fail("vertex_normals must be empty or #V by 3");
 }
 
 std::uint8_t color_byte(double c) {
@@ -120,11 +122,17 @@ void write_obj(OutBuffer& o, const Mesh& m) {
   }
   if (uv)
     for (Eigen::Index i = 0; i < m.uv.rows(); ++i) o.text("vt ").real(m.uv(i, 0)).ch(' ').real(m.uv(i, 1)).ch('\n');
+  const bool normals = m.vertex_normals.size() > 0;
+  if (normals)
+    for (Eigen::Index i = 0; i < m.vertex_normals.rows(); ++i)
+      o.text("vn ").real(m.vertex_normals(i, 0)).ch(' ').real(m.vertex_normals(i, 1)).ch(' ').real(m.vertex_normals(i, 2)).ch('\n');
   for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
     o.ch('f');
     for (int k = 0; k < 3; ++k) {
       o.ch(' ').integer(m.F(f, k) + 1LL);
-      if (uv) o.ch('/').integer(m.F(f, k) + 1LL);
+      if (uv || normals) o.ch('/');
+      if (uv) o.integer(m.F(f, k) + 1LL);
+      if (normals) o.ch('/').integer(m.F(f, k) + 1LL);
     }
     o.ch('\n');
   }
@@ -149,12 +157,13 @@ void write_off(OutBuffer& o, const Mesh& m) {
     o.text("3 ").integer(m.F(f, 0)).ch(' ').integer(m.F(f, 1)).ch(' ').integer(m.F(f, 2)).ch('\n');
 }
 
-/// PLY with double coordinates (exact round trip), optional vertex colours and uv, and
+/// PLY with double coordinates (exact round trip), optional vertex normals, colours and uv, and
 /// optional per-face colours.
 void write_ply(OutBuffer& o, const Mesh& m, bool binary, const Eigen::MatrixXd* face_colors) {
-  const bool vcolors = m.vertex_colors.size() > 0, uv = m.uv.size() > 0;
+  const bool vcolors = m.vertex_colors.size() > 0, uv = m.uv.size() > 0, normals = m.vertex_normals.size() > 0;
   o.text("ply\nformat ").text(binary ? "binary_little_endian" : "ascii").text(" 1.0\ncomment written by msmesh\n");
   o.text("element vertex ").integer(m.V.rows()).text("\nproperty double x\nproperty double y\nproperty double z\n");
+  if (normals) o.text("property double nx\nproperty double ny\nproperty double nz\n");
   if (vcolors) o.text("property uchar red\nproperty uchar green\nproperty uchar blue\n");
   if (uv) o.text("property double texture_u\nproperty double texture_v\n");
   o.text("element face ").integer(m.F.rows()).text("\nproperty list uchar int vertex_indices\n");
@@ -163,12 +172,16 @@ void write_ply(OutBuffer& o, const Mesh& m, bool binary, const Eigen::MatrixXd* 
   for (Eigen::Index i = 0; i < m.V.rows(); ++i) {
     if (binary) {
       for (int c = 0; c < 3; ++c) o.binary<double>(m.V(i, c));
+      if (normals)
+        for (int c = 0; c < 3; ++c) o.binary<double>(m.vertex_normals(i, c));
       if (vcolors)
         for (int c = 0; c < 3; ++c) o.binary<std::uint8_t>(color_byte(m.vertex_colors(i, c)));
       if (uv)
         for (int c = 0; c < 2; ++c) o.binary<double>(m.uv(i, c));
     } else {
       o.real(m.V(i, 0)).ch(' ').real(m.V(i, 1)).ch(' ').real(m.V(i, 2));
+      if (normals)
+        for (int c = 0; c < 3; ++c) o.ch(' ').real(m.vertex_normals(i, c));
       if (vcolors)
         for (int c = 0; c < 3; ++c) o.ch(' ').integer(color_byte(m.vertex_colors(i, c)));
       if (uv) o.ch(' ').real(m.uv(i, 0)).ch(' ').real(m.uv(i, 1));

@@ -30,13 +30,29 @@ Mesh read_mesh(const std::string& path, Eigen::Index* dropped_degenerate = nullp
 Mesh read_mesh_from_memory(std::string_view data, const std::string& format, const std::string& name,
                            Eigen::Index* dropped_degenerate = nullptr);
 
+/// What read_mesh noticed besides the mesh itself.
+struct ReadNotes {
+  Eigen::Index dropped_degenerate = 0;  ///< triangles repeating a vertex, dropped
+  bool had_normals = false;  ///< the file has vertex normals (per-vertex ones fill Mesh::vertex_normals;
+                             ///< per-corner ones, e.g. split at creases, are replaced by recomputed ones)
+  bool uv_dropped = false;   ///< OBJ texture coordinates with seams (one vertex, several vt): not per-vertex, dropped
+};
+
+/// As above, and says what it noticed. OBJ "v x y z r g b" colours, "vt" texture coordinates
+/// and "vn" normals (per-vertex when every corner of a vertex names the same one), and PLY
+/// texture_u/texture_v (or u/v, s/t) and nx/ny/nz vertex properties fill the Mesh attributes.
+Mesh read_mesh(const std::string& path, ReadNotes& notes);
+Mesh read_mesh_from_memory(std::string_view data, const std::string& format, const std::string& name,
+                           ReadNotes& notes);
+
 struct WriteOptions {
   bool binary = true;  ///< PLY and STL: binary (true) or ascii; OBJ and OFF are always text
 };
 
 /// Writes a mesh; the format follows the extension. Coordinates keep full double precision
 /// (shortest round-trip decimal; PLY stores doubles) except in binary STL, which is float32.
-/// Vertex colours go to OBJ ("v x y z r g b"), OFF (COFF) and PLY. The file is written to a
+/// Vertex colours go to OBJ ("v x y z r g b"), OFF (COFF) and PLY; uv and vertex normals to
+/// OBJ (vt, vn) and PLY (texture_u/v, nx/ny/nz). The file is written to a
 /// temporary file in the same folder and renamed into place, so it appears completely or not
 /// at all. Throws InvalidInput (nothing written) for out-of-range indices or non-finite
 /// coordinates, IoError for an unknown extension or a file-system failure.

@@ -10,11 +10,14 @@ namespace msmesh {
 ///  - F: #F by 3 vertex indices, counter-clockwise seen from outside.
 ///  - vertex_colors: empty or #V by 3, RGB in [0,1]; carried through processing untouched.
 ///  - uv: empty or #V by 2 per-vertex texture coordinates; carried through untouched.
+///  - vertex_normals: empty or #V by 3; filled when the file has normals. Commands that move
+///    vertices recompute them (geometry.h vertex_normals) so that they match the result.
 struct Mesh {
   Eigen::MatrixXd V;
   Eigen::MatrixXi F;
   Eigen::MatrixXd vertex_colors;
   Eigen::MatrixXd uv;
+  Eigen::MatrixXd vertex_normals;
 
   Eigen::Index num_vertices() const { return V.rows(); }
   Eigen::Index num_faces() const { return F.rows(); }
