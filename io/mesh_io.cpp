@@ -546,6 +546,12 @@ OffHeader parse_off_header(const std::string& path, std::string_view data) {
 /// or "1e999" end the record).
 std::vector<double> cgal_off_entries(std::string_view line) {
   std::vector<double> entries;
+  // Fast path for the usual records of plain digits (no sign, point or exponent), where
+  // strtod and `istream >> double` agree.
+  if (std::all_of(line.begin(), line.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)) || std::isspace(static_cast<unsigned char>(c)); })) {
+    for (const std::string_view w : split_words(line)) entries.push_back(std::strtod(std::string(w).c_str(), nullptr));
+    return entries;
+  }
   std::istringstream in{std::string(line)};
   double d;
   while (in >> d) entries.push_back(d);
@@ -553,18 +559,28 @@ std::vector<double> cgal_off_entries(std::string_view line) {
 }
 
 /// CGAL reads a colour as 3 or 4 entries or as an index into its 149-entry colour map, which
-/// it clamps above but not below.
+/// it clamps above but not below. It converts the components to unsigned char: integers as
+/// they are, fractions times 255 (undefined behaviour outside [0, 256); found by libFuzzer).
 bool valid_color_entries(const std::vector<double>& e, std::size_t first, std::size_t count) {
-  if (count == 0 || count == 3 || count == 4) return true;
-  return count == 1 && e[first] >= 0 && e[first] < 1e9;
+  if (count == 0) return true;
+  if (count == 1) return e[first] >= 0 && e[first] < 1e9;
+  if (count != 3 && count != 4) return false;
+  bool integers = true;
+  for (std::size_t c = 0; c < 3; ++c) integers = integers && std::floor(e[first + c]) == e[first + c];
+  for (std::size_t c = 0; c < 3; ++c) {
+    const double v = integers ? e[first + c] : e[first + c] * 255;
+    if (!(v > -1 && v < 256)) return false;
+  }
+  return true;
 }
 
 /// Walks the body of an ascii OFF file record by record exactly as CGAL's scanner does (skip
 /// whitespace and '#' lines, take the rest of the line up to '#') and returns the first
 /// problem, or "". With `strict_entries` it also checks the colour and normal entries that
 /// CGAL reads without bounds checks (a short line, or a line without colour after one with,
-/// makes it read past the end of its entry array).
-std::string check_ascii_off(std::string_view data, const OffHeader& h, bool strict_entries) {
+/// makes it read past the end of its entry array). Without `parse_vertices` the vertex
+/// records are only counted, not checked.
+std::string check_ascii_off(std::string_view data, const OffHeader& h, bool strict_entries, bool parse_vertices = true) {
   std::size_t i = h.body_offset;
   std::size_t record_start = i;
   auto next_record = [&](std::string_view& line) {
@@ -598,6 +614,7 @@ std::string check_ascii_off(std::string_view data, const OffHeader& h, bool stri
   for (long long v = 0; v < h.vertices; ++v) {
     if (!next_record(line))
       return "truncated OFF file: it ends after " + std::to_string(v) + " of " + std::to_string(h.vertices) + " vertices";
+    if (!parse_vertices) continue;
     const std::vector<double> e = cgal_off_entries(line);
     if (e.size() < 3) {
       const auto words = split_words(line);
@@ -611,7 +628,7 @@ std::string check_ascii_off(std::string_view data, const OffHeader& h, bool stri
     if (strict_entries) {
       if (e.size() < base) return where("vertex", v) + "fewer entries than the OFF variant requires";
       if (h.colors && !valid_color_entries(e, base, e.size() - base))
-        return where("vertex", v) + "a colour needs 3 or 4 entries (or one colour-map index)";
+        return where("vertex", v) + "a colour needs 3 or 4 entries in 0..255 or 0..1 (or one colour-map index)";
       if (h.colors && mixed(e.size() > base)) return where("vertex", v) + "some vertices have a colour, others not";
     }
   }
@@ -631,7 +648,7 @@ std::string check_ascii_off(std::string_view data, const OffHeader& h, bool stri
                std::to_string(h.vertices) + ")";
     if (strict_entries && h.colors) {
       if (!valid_color_entries(e, n + 1, e.size() - n - 1))
-        return where("face", f) + "a colour needs 3 or 4 entries (or one colour-map index)";
+        return where("face", f) + "a colour needs 3 or 4 entries in 0..255 or 0..1 (or one colour-map index)";
       if (mixed(e.size() > n + 1)) return where("face", f) + "some faces have a colour, others not";
     }
   }
@@ -641,8 +658,11 @@ std::string check_ascii_off(std::string_view data, const OffHeader& h, bool stri
 void read_off(const std::string& path, std::string_view data, Soup& soup) {
   const OffHeader h = parse_off_header(path, data);
   const bool has_extras = h.colors || h.normals || h.homogeneous;
-  if (!h.binary && has_extras) {
-    const std::string problem = check_ascii_off(data, h, true);
+  if (!h.binary) {
+    // CGAL reads face records as doubles and converts the vertex count and the indices to
+    // size_t unchecked (undefined behaviour for negative, huge or NaN entries; found by
+    // libFuzzer), so the faces are always checked first; with extras, the vertices too.
+    const std::string problem = check_ascii_off(data, h, has_extras, has_extras);
     if (!problem.empty()) throw IoError(path + ": " + problem);
   }
   MemoryStream in(data);
