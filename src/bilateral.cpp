@@ -78,7 +78,7 @@ Eigen::MatrixXd bilateral_filter_normals(const Eigen::MatrixXd& V, const Eigen::
   const double is2 = 1.0 / (2 * sigma_s * sigma_s), ir2 = 1.0 / (2 * o.sigma_r * o.sigma_r);
   Eigen::MatrixXd N = face_normals(Vn, F), Nn(nf, 3);
   for (int it = 0; it < o.normal_iterations; ++it) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nf >= 8192)
     for (Eigen::Index f = 0; f < nf; ++f) {
       Eigen::RowVector3d s = A(f) * N.row(f);
       for (int i = start[f]; i < start[f + 1]; ++i) {

@@ -12,7 +12,7 @@ inline Eigen::Vector3d row3(const Eigen::MatrixXd& V, int i) { return V.row(i).t
 
 Eigen::VectorXd face_areas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   Eigen::VectorXd a(F.rows());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (F.rows() >= 32768)
   for (Eigen::Index f = 0; f < F.rows(); ++f) {
     const Eigen::Vector3d p0 = row3(V, F(f, 0)), p1 = row3(V, F(f, 1)), p2 = row3(V, F(f, 2));
     a(f) = 0.5 * (p1 - p0).cross(p2 - p0).norm();
@@ -22,7 +22,7 @@ Eigen::VectorXd face_areas(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
 
 Eigen::MatrixXd face_normals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   Eigen::MatrixXd N(F.rows(), 3);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (F.rows() >= 32768)
   for (Eigen::Index f = 0; f < F.rows(); ++f) {
     const Eigen::Vector3d p0 = row3(V, F(f, 0)), p1 = row3(V, F(f, 1)), p2 = row3(V, F(f, 2));
     // eq. 14: (v1 − v2) × (v3 − v2) with the paper's 1-based corners is (p1−p0)×(p2−p0) here

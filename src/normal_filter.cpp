@@ -117,7 +117,7 @@ int solve_v_step(const SparseMatrix& K, const Eigen::VectorXd& K_diag, const Eig
   const Eigen::Index n = b.size();
   auto apply = [&](const Eigen::VectorXd& x, Eigen::VectorXd& y) {
     // K is symmetric: column j of K is row j.
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= detail::kParallelMin)
     for (Eigen::Index j = 0; j < n; ++j) {
       double s = (d(j) - K_diag(j)) * x(j);
       for (SparseMatrix::InnerIterator it(K, j); it; ++it) s += it.value() * x(it.row());

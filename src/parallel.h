@@ -9,9 +9,10 @@ namespace msmesh::detail {
 
 /// Rows per block. Reductions form one partial sum per block and add the partials in block
 /// order, so a sum is the same whatever the number of threads; loops over fewer than
-/// kParallelMin rows run on one thread (the fork/join would cost more than the work).
+/// kParallelMin rows run on one thread (below that the fork/join costs about as much as the
+/// work it shares, and far more when the machine is busy).
 constexpr Eigen::Index kBlock = 2048;
-constexpr Eigen::Index kParallelMin = 4 * kBlock;
+constexpr Eigen::Index kParallelMin = 16 * kBlock;
 
 /// Runs body(begin, end, sums) over fixed blocks of [0, n) and returns the K sums, added in
 /// block order. body adds its block's contributions to sums (zero-initialised).
@@ -36,6 +37,14 @@ template <class Body>
 void parallel_for(Eigen::Index n, Body&& body) {
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (Eigen::Index i = 0; i < n; ++i) body(i);
+}
+
+/// Runs body(begin, end) over fixed blocks of [0, n), in parallel when n is large enough.
+template <class Body>
+void parallel_for_blocks(Eigen::Index n, Body&& body) {
+  const Eigen::Index nb = (n + kBlock - 1) / kBlock;
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (Eigen::Index b = 0; b < nb; ++b) body(b * kBlock, std::min(n, (b + 1) * kBlock));
 }
 
 }  // namespace msmesh::detail

@@ -106,22 +106,25 @@ PcgStats BlockPcg::solve(const RowMatrixX3& B, RowMatrixX3& X, double relative_t
     const double* Pp = P.data();
     double* Qp = Q.data();
     const auto s1 = column_sums<1>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 1>& s) {
+      const double* __restrict p = Pp;
+      double* __restrict q = Qp;
       double s_0 = 0, s_1 = 0, s_2 = 0;
       for (Eigen::Index i = i0; i < i1; ++i) {
         double a0 = 0, a1 = 0, a2 = 0;
-        for (int j = outer[i]; j < outer[i + 1]; ++j) {
+        const int j1 = outer[i + 1];
+        for (int j = outer[i]; j < j1; ++j) {
           const double a = val[j];
-          const double* pj = Pp + 3 * static_cast<Eigen::Index>(inner[j]);
+          const double* pj = p + 3 * static_cast<Eigen::Index>(inner[j]);
           a0 += a * pj[0];
           a1 += a * pj[1];
           a2 += a * pj[2];
         }
-        Qp[3 * i] = a0;
-        Qp[3 * i + 1] = a1;
-        Qp[3 * i + 2] = a2;
-        s_0 += Pp[3 * i] * a0;
-        s_1 += Pp[3 * i + 1] * a1;
-        s_2 += Pp[3 * i + 2] * a2;
+        q[3 * i] = a0;
+        q[3 * i + 1] = a1;
+        q[3 * i + 2] = a2;
+        s_0 += p[3 * i] * a0;
+        s_1 += p[3 * i + 1] * a1;
+        s_2 += p[3 * i + 2] * a2;
       }
       s[0] = {s_0, s_1, s_2};
     });
@@ -130,19 +133,24 @@ PcgStats BlockPcg::solve(const RowMatrixX3& B, RowMatrixX3& X, double relative_t
     // x += α p, r −= α q; sums: r·D⁻¹r, ‖r‖².
     double* Xp = X.data();
     double* Rp = R.data();
+    const double al0 = alpha[0], al1 = alpha[1], al2 = alpha[2];
     const auto s2 = column_sums<2>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 2>& s) {
+      double* __restrict x = Xp;
+      double* __restrict r = Rp;
+      const double* __restrict p = Pp;
+      const double* __restrict q = Qp;
+      const double* __restrict id = inv_d;
       double rz0 = 0, rz1 = 0, rz2 = 0, rr0 = 0, rr1 = 0, rr2 = 0;
       for (Eigen::Index i = i0; i < i1; ++i) {
         const Eigen::Index b = 3 * i;
-        Xp[b] += alpha[0] * Pp[b];
-        Xp[b + 1] += alpha[1] * Pp[b + 1];
-        Xp[b + 2] += alpha[2] * Pp[b + 2];
-        const double r0 = Rp[b] - alpha[0] * Qp[b], r1 = Rp[b + 1] - alpha[1] * Qp[b + 1],
-                     r2 = Rp[b + 2] - alpha[2] * Qp[b + 2];
-        Rp[b] = r0;
-        Rp[b + 1] = r1;
-        Rp[b + 2] = r2;
-        const double di = inv_d[i];
+        x[b] += al0 * p[b];
+        x[b + 1] += al1 * p[b + 1];
+        x[b + 2] += al2 * p[b + 2];
+        const double r0 = r[b] - al0 * q[b], r1 = r[b + 1] - al1 * q[b + 1], r2 = r[b + 2] - al2 * q[b + 2];
+        r[b] = r0;
+        r[b + 1] = r1;
+        r[b + 2] = r2;
+        const double di = id[i];
         rz0 += r0 * r0 * di;
         rz1 += r1 * r1 * di;
         rz2 += r2 * r2 * di;
@@ -173,9 +181,16 @@ PcgStats BlockPcg::solve(const RowMatrixX3& B, RowMatrixX3& X, double relative_t
     Sums keep{};
     for (int c = 0; c < 3; ++c) keep[c] = done[c] ? 0.0 : 1.0;
     double* Pw = P.data();
-    parallel_for(n, [&](Eigen::Index i) {
-      const double di = inv_d[i];
-      for (int c = 0; c < 3; ++c) Pw[3 * i + c] = keep[c] * (Rp[3 * i + c] * di + beta[c] * Pw[3 * i + c]);
+    const double k0 = keep[0], k1 = keep[1], k2 = keep[2], b0 = beta[0], b1 = beta[1], b2 = beta[2];
+    parallel_for_blocks(n, [&](Eigen::Index i0, Eigen::Index i1) {
+      double* __restrict p = Pw;
+      const double* __restrict r = Rp;
+      for (Eigen::Index i = i0; i < i1; ++i) {
+        const double di = inv_d[i];
+        p[3 * i] = k0 * (r[3 * i] * di + b0 * p[3 * i]);
+        p[3 * i + 1] = k1 * (r[3 * i + 1] * di + b1 * p[3 * i + 1]);
+        p[3 * i + 2] = k2 * (r[3 * i + 2] * di + b2 * p[3 * i + 2]);
+      }
     });
   }
   stats.iterations = it;
