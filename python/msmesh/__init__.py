@@ -36,7 +36,7 @@ __version__ = "0.1.0"
 
 __all__ = [
     "denoise", "filter_normals", "update_vertices", "add_noise", "evaluate", "choose_preset",
-    "read_mesh", "write_mesh", "make_shape", "shape_names", "preset_names", "PARAMETERS",
+    "read_mesh", "write_mesh", "repair", "make_shape", "shape_names", "preset_names", "PARAMETERS",
     "Error", "InvalidInputError", "IoError", "SolverError", "Cancelled", "ProgressEvent",
     "DenoiseOptions", "DenoiseMethod", "NormalFilterOptions", "VertexUpdateOptions", "BilateralOptions",
 ]
@@ -275,6 +275,30 @@ def write_mesh(path, V, F, binary=True):
     path = _checks.path(path)
     V, F = _checks.mesh(V, F, allow_empty_faces=True)
     _core.write_mesh(path, V, F, _checks.boolean(binary, "binary"))
+
+
+def repair(V, F, weld=0.0, merge_duplicate_vertices=True, remove_degenerate_faces=True,
+           remove_duplicate_faces=True, orient=True, split_non_manifold=False, remove_unreferenced=False):
+    """Repairs a messy mesh (see docs/robustness.md): merges duplicate vertices (exact, or closer
+    than weld x mean edge length; faces are redirected, the copies stay unreferenced), removes
+    faces repeating a vertex, zero-area and duplicate faces, orients each component
+    consistently (closed ones outwards), optionally splits non-manifold vertices (copies
+    appended) and removes unreferenced vertices (the only option that renumbers vertices).
+
+    Returns a dict: V, F, vertex_map (new index of each input vertex, -1 if removed),
+    face_origin (input face of each output face) and report (counts of what was done, and
+    'actions', one line per action)."""
+    V = _checks.real_matrix(V, "V")
+    F = _checks.faces(F, V.shape[0], "F", allow_empty=True, allow_repeated=True)
+    o = _core.RepairOptions()
+    o.weld_tolerance = _checks.real(weld, "weld", minimum=0.0)
+    o.merge_duplicate_vertices = _checks.boolean(merge_duplicate_vertices, "merge_duplicate_vertices")
+    o.remove_degenerate_faces = _checks.boolean(remove_degenerate_faces, "remove_degenerate_faces")
+    o.remove_duplicate_faces = _checks.boolean(remove_duplicate_faces, "remove_duplicate_faces")
+    o.orient = _checks.boolean(orient, "orient")
+    o.split_non_manifold = _checks.boolean(split_non_manifold, "split_non_manifold")
+    o.remove_unreferenced = _checks.boolean(remove_unreferenced, "remove_unreferenced")
+    return _core.repair(V, F, o)
 
 
 def make_shape(name, resolution):

@@ -64,7 +64,7 @@ def real_vector(x, name, length=None):
     return a
 
 
-def faces(x, num_vertices, name="F", allow_empty=False):
+def faces(x, num_vertices, name="F", allow_empty=False, allow_repeated=False):
     """(n, 3) C-contiguous int32 array of valid triangle indices into num_vertices vertices.
 
     Integer arrays must fit in int32; float arrays must hold whole numbers."""
@@ -89,7 +89,7 @@ def faces(x, num_vertices, name="F", allow_empty=False):
             raise InvalidInputError(
                 f"{name}: row {row} = {a[row].astype(np.int64).tolist()} has an index out of range [0, {num_vertices})")
     a = np.ascontiguousarray(a, dtype=np.int32)
-    if a.size:
+    if a.size and not allow_repeated:
         repeated = (a[:, 0] == a[:, 1]) | (a[:, 1] == a[:, 2]) | (a[:, 0] == a[:, 2])
         if repeated.any():
             row = int(np.flatnonzero(repeated)[0])

@@ -38,6 +38,10 @@
 #include "msmesh/inpaint.h"
 #define MSMESH_PY_INPAINT 1
 #endif
+#if __has_include("msmesh/repair.h")
+#include "msmesh/repair.h"
+#define MSMESH_PY_REPAIR 1
+#endif
 
 namespace py = pybind11;
 
@@ -297,6 +301,37 @@ void write_mesh_binding(const std::string& path, const Eigen::MatrixXd& V, const
     return 0;
   });
 }
+
+#ifdef MSMESH_PY_REPAIR
+py::dict repair_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const RepairOptions& options) {
+  Mesh mesh;
+  mesh.V = V;
+  mesh.F = F;
+  const RepairReport r = run_without_gil(py::none(), [&](const ProgressCallback&) { return repair_mesh(mesh, options); });
+  py::dict report;
+  report["merged_vertices"] = r.merged_vertices;
+  report["degenerate_faces_removed"] = r.degenerate_faces_removed;
+  report["zero_area_faces_removed"] = r.zero_area_faces_removed;
+  report["duplicate_faces_removed"] = r.duplicate_faces_removed;
+  report["flipped_faces"] = r.flipped_faces;
+  report["split_vertices"] = r.split_vertices;
+  report["unreferenced_vertices_removed"] = r.unreferenced_vertices_removed;
+  report["components"] = r.components;
+  report["non_orientable_components"] = r.non_orientable_components;
+  report["non_manifold_edges"] = r.non_manifold_edges;
+  report["non_manifold_vertices"] = r.non_manifold_vertices;
+  report["unreferenced_vertices"] = r.unreferenced_vertices;
+  report["changed"] = r.changed();
+  report["actions"] = r.actions();
+  py::dict d;
+  d["V"] = to_numpy(mesh.V);
+  d["F"] = to_numpy(mesh.F);
+  d["vertex_map"] = py::cast(Eigen::VectorXi(r.vertex_map));
+  d["face_origin"] = py::cast(Eigen::VectorXi(r.face_origin));
+  d["report"] = report;
+  return d;
+}
+#endif
 
 py::tuple make_shape_binding(const std::string& name, int resolution) {
   const Mesh mesh = run_without_gil(py::none(), [&](const ProgressCallback&) { return make_shape(name, resolution); });
@@ -578,6 +613,20 @@ PYBIND11_MODULE(_core, m) {
   m.def("feature_lines", &feature_lines_binding, py::arg("V"), py::arg("F"), py::arg("v"), py::arg("threshold"),
         py::arg("min_edges"));
   m.def("rand_index", &rand_index_binding, py::arg("labels_a"), py::arg("labels_b"));
+#endif
+#ifdef MSMESH_PY_REPAIR
+  py::class_<RepairOptions>(m, "RepairOptions", "Options of repair() (see repair.h).")
+      .def(py::init<>())
+      .def_readwrite("merge_duplicate_vertices", &RepairOptions::merge_duplicate_vertices)
+      .def_readwrite("weld_tolerance", &RepairOptions::weld_tolerance)
+      .def_readwrite("remove_degenerate_faces", &RepairOptions::remove_degenerate_faces)
+      .def_readwrite("zero_area_tolerance", &RepairOptions::zero_area_tolerance)
+      .def_readwrite("remove_duplicate_faces", &RepairOptions::remove_duplicate_faces)
+      .def_readwrite("orient", &RepairOptions::orient)
+      .def_readwrite("split_non_manifold", &RepairOptions::split_non_manifold)
+      .def_readwrite("remove_unreferenced", &RepairOptions::remove_unreferenced)
+      .def("validate", &RepairOptions::validate);
+  m.def("repair", &repair_binding, py::arg("V"), py::arg("F"), py::arg("options"));
 #endif
 #ifdef MSMESH_PY_INPAINT
   m.def("find_holes", &find_holes_binding, py::arg("V"), py::arg("F"));
