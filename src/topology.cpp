@@ -1,6 +1,9 @@
 #include "msmesh/topology.h"
 
+#include "msmesh/errors.h"
+
 #include <algorithm>
+#include <string>
 #include <cstdint>
 #include <numeric>
 #include <unordered_map>
@@ -15,19 +18,46 @@ Topology build_topology(const Eigen::MatrixXi& F, Eigen::Index num_vertices) {
   struct HalfEdge {
     int lo, hi, face, corner;
   };
-  std::vector<HalfEdge> he(static_cast<size_t>(3 * nf));
-  for (Eigen::Index f = 0; f < nf; ++f) {
+  // Counting sort on lo (linear time), then the few half-edges of each vertex by (hi, face,
+  // corner): the same order as a full sort on (lo, hi, face, corner), so the same numbering.
+  Eigen::Index max_vertex = num_vertices;
+  if (F.cols() != 3 && nf > 0) throw InvalidInput("topology: faces must be #F by 3");
+  for (Eigen::Index f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
-      const int a = F(f, (k + 1) % 3), b = F(f, (k + 2) % 3);
-      he[3 * f + k] = {std::min(a, b), std::max(a, b), static_cast<int>(f), k};
+      if (F(f, k) < 0)
+        throw InvalidInput("topology: face " + std::to_string(f) + " has a negative vertex index " +
+                           std::to_string(F(f, k)));
+      max_vertex = std::max<Eigen::Index>(max_vertex, F(f, k) + 1);
+    }
+  std::vector<int> start(static_cast<size_t>(max_vertex) + 1, 0);
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) ++start[static_cast<size_t>(std::min(F(f, (k + 1) % 3), F(f, (k + 2) % 3))) + 1];
+  for (size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+  std::vector<HalfEdge> he(static_cast<size_t>(3 * nf));
+  {
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (Eigen::Index f = 0; f < nf; ++f) {
+      for (int k = 0; k < 3; ++k) {
+        const int a = F(f, (k + 1) % 3), b = F(f, (k + 2) % 3);
+        const int lo = std::min(a, b);
+        he[static_cast<size_t>(fill[static_cast<size_t>(lo)]++)] = {lo, std::max(a, b), static_cast<int>(f), k};
+      }
     }
   }
-  std::sort(he.begin(), he.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    if (x.lo != y.lo) return x.lo < y.lo;
+  const auto less = [](const HalfEdge& x, const HalfEdge& y) {
     if (x.hi != y.hi) return x.hi < y.hi;
     if (x.face != y.face) return x.face < y.face;
     return x.corner < y.corner;
-  });
+  };
+  for (size_t v = 0; v + 1 < start.size(); ++v) {
+    const auto b = he.begin() + start[v], e = he.begin() + start[v + 1];
+    if (e - b < 32) {  // insertion sort: buckets hold a vertex's few edges
+      for (auto i = b + 1; i < e; ++i)
+        for (auto j = i; j > b && less(*j, *(j - 1)); --j) std::iter_swap(j, j - 1);
+    } else {
+      std::sort(b, e, less);
+    }
+  }
   Eigen::Index ne = 0;
   for (size_t i = 0; i < he.size(); ++i)
     if (i == 0 || he[i].lo != he[i - 1].lo || he[i].hi != he[i - 1].hi) ++ne;
