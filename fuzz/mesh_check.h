@@ -27,6 +27,11 @@ inline std::string mesh_problem(const Mesh& m) {
   }
   if (m.uv.size() != 0) {
     if (m.uv.rows() != nv || m.uv.cols() != 2) return "uv is not #V by 2";
+    if (!m.uv.allFinite()) return "non-finite texture coordinate";
+  }
+  if (m.vertex_normals.size() != 0) {
+    if (m.vertex_normals.rows() != nv || m.vertex_normals.cols() != 3) return "vertex_normals is not #V by 3";
+    if (!m.vertex_normals.allFinite()) return "non-finite vertex normal";
   }
   return "";
 }

@@ -406,6 +406,12 @@ void read_obj_attributes(std::string_view data, Soup& soup) {
       soup.uv.resize(nv, {0.0, 0.0});
       for (std::size_t v = 0; v < nv; ++v)
         if (vertex_vt[v] >= 0) soup.uv[v] = vt[static_cast<std::size_t>(vertex_vt[v])];
+      // Non-finite values (e.g. "vt 1e999 0") drop the attribute, as for PLY.
+      for (const auto& t : soup.uv)
+        if (!std::isfinite(t[0]) || !std::isfinite(t[1])) {
+          soup.uv.clear();
+          break;
+        }
     }
   }
   if (any_vn) {
@@ -414,6 +420,12 @@ void read_obj_attributes(std::string_view data, Soup& soup) {
       soup.normals.resize(nv, {0.0, 0.0, 0.0});
       for (std::size_t v = 0; v < nv; ++v)
         if (vertex_vn[v] >= 0) soup.normals[v] = vn[static_cast<std::size_t>(vertex_vn[v])];
+      // Non-finite normals are recomputed instead (libFuzzer found them passed through).
+      for (const auto& n : soup.normals)
+        if (!std::isfinite(n[0]) || !std::isfinite(n[1]) || !std::isfinite(n[2])) {
+          soup.normals.clear();
+          break;
+        }
     }
   }
 }
@@ -640,7 +652,7 @@ std::string check_ascii_off(std::string_view data, const OffHeader& h, bool stri
     if (e.empty() || !(e[0] >= 0) || e[0] != std::floor(e[0])) return where("face", f) + "invalid vertex count";
     const double count = e[0];
     if (static_cast<double>(e.size()) - 1 < count)
-      return where("face", f) + "lists fewer than " + std::to_string(static_cast<long long>(count)) + " vertex indices";
+      return where("face", f) + "lists fewer than " + fmt_number(count) + " vertex indices";
     const std::size_t n = static_cast<std::size_t>(count);
     for (std::size_t k = 1; k <= n; ++k)
       if (!(e[k] >= 0 && e[k] < static_cast<double>(h.vertices)))
@@ -994,9 +1006,9 @@ void read_ply_attributes(std::string_view data, const PlyHeader& h, Soup& soup) 
         const int pi = static_cast<int>(p);
         if (pi == iu) uv[j][0] = x;
         if (pi == iv) uv[j][1] = x;
-        if (pi == inx) normals[j][0] = x;
-        if (pi == iny) normals[j][1] = x;
-        if (pi == inz) normals[j][2] = x;
+        if (want_n && pi == inx) normals[j][0] = x;  // nx alone (no ny, nz): no normals
+        if (want_n && pi == iny) normals[j][1] = x;
+        if (want_n && pi == inz) normals[j][2] = x;
       }
   }
   if (!ok) return;
@@ -1165,8 +1177,12 @@ Mesh soup_to_mesh(const std::string& path, const Soup& soup, Eigen::Index* dropp
   fill(mesh.uv, soup.uv);
   fill(mesh.vertex_normals, soup.normals);
   // Normals that are not per-vertex (split at creases) are replaced by recomputed ones.
-  if (soup.notes.had_normals && mesh.vertex_normals.size() == 0 && soup.normals.empty())
+  if (soup.notes.had_normals && mesh.vertex_normals.size() == 0 && soup.normals.empty()) {
     mesh.vertex_normals = vertex_normals(mesh.V, mesh.F);
+    // Coordinates near the double range (e.g. 1e308, found by libFuzzer) overflow the cross
+    // products: no normals rather than non-finite ones.
+    if (!mesh.vertex_normals.allFinite()) mesh.vertex_normals.resize(0, 3);
+  }
   if (dropped_degenerate) *dropped_degenerate = dropped;
   return mesh;
 }
