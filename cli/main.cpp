@@ -10,20 +10,28 @@
 
 namespace {
 
-// OpenMP threads that wait at a barrier spin by default. On a busy machine (another build,
-// another msmesh) a spinning thread holds a core the working thread needs, and a 1 s job can
-// take 10 s (docs/performance.md). libgomp reads OMP_WAIT_POLICY once, when it is loaded, so
-// when the user has not chosen a policy msmesh restarts itself once with "passive" set.
-void prefer_passive_openmp_waits(char** argv) {
-  if (std::getenv("OMP_WAIT_POLICY") != nullptr || std::getenv("GOMP_SPINCOUNT") != nullptr) return;
-  if (setenv("OMP_WAIT_POLICY", "passive", 1) != 0) return;
+// Two settings that are only read when the process starts, so msmesh restarts itself once
+// with them when the user has not chosen otherwise (docs/performance.md has the figures):
+//  - OMP_WAIT_POLICY=passive: OpenMP threads waiting at a barrier spin by default; on a busy
+//    machine a spinning thread holds a core the working thread needs (a 1 s job took 10 s).
+//  - GLIBC_TUNABLES=glibc.malloc.hugetlb=1: large arrays on transparent huge pages; on this
+//    kind of virtual machine a page fault costs microseconds, and setting up the operators of
+//    a million-face mesh took 2-3 times longer with 4 KB pages.
+void restart_with_runtime_settings(char** argv) {
+  if (std::getenv("MSMESH_NO_RESTART") != nullptr) return;
+  bool changed = false;
+  if (std::getenv("OMP_WAIT_POLICY") == nullptr && std::getenv("GOMP_SPINCOUNT") == nullptr)
+    changed |= setenv("OMP_WAIT_POLICY", "passive", 1) == 0;
+  if (std::getenv("GLIBC_TUNABLES") == nullptr) changed |= setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1", 1) == 0;
+  if (!changed) return;
+  setenv("MSMESH_NO_RESTART", "1", 1);
   execv("/proc/self/exe", argv);  // returns only on failure: then carry on as we are
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  prefer_passive_openmp_waits(argv);
+  restart_with_runtime_settings(argv);
   CLI::App app{
       "msmesh: feature-preserving mesh processing with a Mumford-Shah model on face normals\n"
       "(denoising, inpainting, segmentation; Liu et al. 2022, NMSTV)."};
