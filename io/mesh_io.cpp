@@ -501,6 +501,10 @@ OffHeader parse_off_header(const std::string& path, std::string_view data) {
   const std::size_t key_start = i;
   while (i < data.size() && std::isalnum(static_cast<unsigned char>(data[i]))) ++i;
   const std::string_view key = data.substr(key_start, i - key_start);
+  // CGAL's keyword loop (in.get(c) while alnum) also consumes the character after the
+  // keyword: in "COFF#4 0 0" the '#' starts no comment and 4 is the vertex count (libFuzzer
+  // found the difference, which let CGAL read colours past the end of short records).
+  if (i < data.size()) ++i;
   if (key.size() < 3 || key.substr(key.size() - 3) != "OFF")
     throw IoError(path + ": not an OFF file (it starts with " + quote_word(data.substr(key_start, 12)) +
                   ", expected OFF, COFF, NOFF...)");
