@@ -12,6 +12,7 @@
 #include "msmesh/io.h"
 #include "msmesh/memory.h"
 #include "msmesh/metrics.h"
+#include "msmesh/repair.h"
 #include "msmesh/topology.h"
 #include "report.h"
 
@@ -20,7 +21,7 @@ namespace {
 
 struct Args {
   std::string input, output, truth, field, preset = "auto", method = "nmstv";
-  bool json = false, quiet = false, in_place = false, ascii = false;
+  bool json = false, quiet = false, in_place = false, ascii = false, repair = false;
   double alpha = 0, beta = 0, gamma = 0, rho = 0, epsilon = 0, penalty = 0, nu = 0, v0 = 0;
   int normal_iterations = 0, vertex_iterations = 0;
   double omega1 = 0, omega2 = 0, omega3 = 0;
@@ -42,6 +43,12 @@ void run(const Args& a, const Overrides& ov) {
   const auto t_read0 = std::chrono::steady_clock::now();
   ReadNotes notes;
   Mesh mesh = read_mesh(a.input, notes);
+  std::vector<std::string> repairs;  // --repair: what repair_mesh did (vertex order kept)
+  if (a.repair) {
+    const RepairReport rr = repair_mesh(mesh);
+    repairs = rr.actions();
+    if (mesh.F.rows() == 0) throw InvalidInput(a.input + ": --repair removed every face (all are degenerate)");
+  }
   const double t_read = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_read0).count();
 
   std::string preset = a.preset;
@@ -113,6 +120,11 @@ void run(const Args& a, const Overrides& ov) {
       j.add("auto_sharp_fraction", choice.sharp_fraction).add("auto_flat_fraction", choice.flat_fraction);
     j.add("vertices", static_cast<long long>(mesh.V.rows())).add("faces", static_cast<long long>(mesh.F.rows()));
     j.add("dropped_degenerate_faces", static_cast<long long>(notes.dropped_degenerate));
+    if (a.repair) {
+      std::vector<Json> done;
+      for (const std::string& line : repairs) done.push_back(Json().add("action", line));
+      j.add("repair", done);
+    }
     Json params;
     params.add("alpha", o.normals.alpha).add("beta", o.normals.beta).add("gamma", o.normals.gamma)
         .add("rho", o.normals.rho).add("epsilon", o.normals.epsilon).add("omega1", o.vertices.omega1)
@@ -143,6 +155,7 @@ void run(const Args& a, const Overrides& ov) {
             << mesh.F.rows() << " faces)\n";
   if (notes.dropped_degenerate > 0)
     std::cout << "  note: " << notes.dropped_degenerate << " face(s) repeating a vertex were dropped on reading\n";
+  for (const std::string& line : repairs) std::cout << "  repair: " << line << "\n";
   if (notes.uv_dropped)
     std::cout << "  note: the input's texture coordinates have seams (not per-vertex) and were not carried over\n";
   std::cout << "  method " << a.method;
@@ -216,6 +229,9 @@ const Registrar reg("denoise", 50, [](CLI::App& app) {
   c->add_flag("-q,--quiet", a->quiet, "No progress bar");
   c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");
   c->add_flag("--in-place", a->in_place, "Allow the output to overwrite the input file");
+  c->add_flag("--repair", a->repair,
+              "First repair the mesh as `msmesh repair` does by default (duplicate vertices, degenerate and "
+              "duplicate faces, orientation); removed faces change the face count");
   c->callback([a, ov]() { run(*a, *ov); });
 });
 

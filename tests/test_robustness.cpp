@@ -151,6 +151,26 @@ TEST(AwkwardMeshes, DuplicateFacesAreDenoisedWithoutNaN) {
   cli_denoise_ok(d, noisy(dup, 0.01), "dup.ply", "dup_out.ply");
 }
 
+TEST(AwkwardMeshes, DenoiseRepairOptionRepairsFirstAndSaysWhat) {
+  Mesh m = noisy(test::grid(6, 0.2), 0.01);
+  const Eigen::Index nf = m.F.rows();
+  m.F.conservativeResize(nf + 2, 3);
+  m.F.row(nf) = m.F.row(5);
+  m.F.row(nf + 1) << m.F(3, 0), m.F(3, 2), m.F(3, 1);
+  std::swap(m.F(8, 1), m.F(8, 2));
+  TempDir d;
+  const std::string in = d.file("messy.ply"), out = d.file("clean.ply");
+  write_mesh(in, m);
+  const auto run = run_cli("denoise " + in + " -o " + out + " -q --repair");
+  ASSERT_EQ(run.status, 0) << run.out;
+  EXPECT_NE(run.out.find("repair: removed duplicate faces: 2"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("repair: flipped faces to orient components consistently: 1"), std::string::npos) << run.out;
+  const Mesh r = read_mesh(out);
+  EXPECT_EQ(r.V.rows(), m.V.rows());
+  EXPECT_EQ(r.F, test::grid(6).F);
+  EXPECT_TRUE(r.V.allFinite());
+}
+
 TEST(AwkwardMeshes, ZeroAreaFacesAreDenoisedWithoutNaN) {
   Mesh m = test::grid(6, 0.2);
   // A sliver: vertex at the midpoint of an edge, with a zero-area face on that edge, plus a
