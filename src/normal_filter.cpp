@@ -189,11 +189,14 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
     A = o.penalty * (GtL * ops.G);
     A += SparseMatrix(fid_weight.asDiagonal());
   }
-  // Auto: conjugate gradients, whose cost grows linearly with the mesh, unless per-face α
+  // Auto: the factorisation below kCgMinFaces faces (cheap there, and exact), conjugate
+  // gradients above (linear cost, where the factor grows like n^1.5), unless per-face α
   // weights switch the fidelity off somewhere (inpainting): the matrix then loses its
-  // diagonal dominance there and the factorisation is faster and exact.
-  const bool use_cg = o.solver == LinearSolver::CG ||
-                      (o.solver == LinearSolver::Auto && (face_alpha.size() == 0 || face_alpha.minCoeff() >= 0.5));
+  // diagonal dominance and the factorisation is faster at any size (docs/performance.md).
+  constexpr Eigen::Index kCgMinFaces = 80000;
+  const bool use_cg =
+      o.solver == LinearSolver::CG ||
+      (o.solver == LinearSolver::Auto && nf >= kCgMinFaces && face_alpha.minCoeff() >= 0.5);
   std::unique_ptr<detail::FixedCholesky> chol;
   std::unique_ptr<detail::BlockPcg> pcg;
   if (use_cg)

@@ -1,6 +1,8 @@
 #include "pcg.h"
 
+#include <algorithm>
 #include <array>
+#include <utility>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -32,16 +34,107 @@ using Sums = std::array<double, 3>;
 
 RowMatrixX3 to_rows(const Eigen::MatrixXd& M) { return RowMatrixX3(M); }
 
-BlockPcg::BlockPcg(const Eigen::SparseMatrix<double>& A) : A_(A) {
-  A_.makeCompressed();
-  inv_diag_.resize(A_.rows());
-  for (Eigen::Index i = 0; i < A_.rows(); ++i) {
+namespace {
+
+// Reverse Cuthill–McKee order of the graph of the symmetric matrix A (new position → old
+// row): neighbours end up close in memory, so the gathers of the matrix–vector product hit
+// the cache. Scanned meshes often list their vertices in scan order, not surface order (the
+// Cone's faces span 5800 vertex indices on median); there this makes CG sweeps ~2× cheaper.
+std::vector<int> reverse_cuthill_mckee(const RowSparse& A) {
+  const int n = static_cast<int>(A.rows());
+  std::vector<int> degree(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) degree[static_cast<size_t>(i)] = A.outerIndexPtr()[i + 1] - A.outerIndexPtr()[i];
+  std::vector<int> order;
+  order.reserve(static_cast<size_t>(n));
+  std::vector<char> seen(static_cast<size_t>(n), 0);
+  std::vector<int> nbrs;
+  // Breadth-first from `start`, appending to `out`; returns the last vertex reached with the
+  // smallest degree in the last level (a pseudo-peripheral vertex for the next start).
+  auto bfs = [&](int start, std::vector<int>& out, std::vector<char>& mark) {
+    size_t head = out.size();
+    out.push_back(start);
+    mark[static_cast<size_t>(start)] = 1;
+    size_t level_begin = head;
+    while (head < out.size()) {
+      const size_t level_end = out.size();
+      level_begin = head;
+      for (; head < level_end; ++head) {
+        const int u = out[head];
+        nbrs.clear();
+        for (RowSparse::InnerIterator it(A, u); it; ++it) {
+          const int w = static_cast<int>(it.col());
+          if (!mark[static_cast<size_t>(w)]) {
+            mark[static_cast<size_t>(w)] = 1;
+            nbrs.push_back(w);
+          }
+        }
+        std::sort(nbrs.begin(), nbrs.end(), [&](int a, int b) {
+          return degree[static_cast<size_t>(a)] != degree[static_cast<size_t>(b)]
+                     ? degree[static_cast<size_t>(a)] < degree[static_cast<size_t>(b)]
+                     : a < b;
+        });
+        out.insert(out.end(), nbrs.begin(), nbrs.end());
+      }
+    }
+    int best = out[level_begin];
+    for (size_t i = level_begin; i < out.size(); ++i)
+      if (degree[static_cast<size_t>(out[i])] < degree[static_cast<size_t>(best)]) best = out[i];
+    return best;
+  };
+  std::vector<int> scratch;
+  std::vector<char> scratch_mark;
+  for (int s = 0; s < n; ++s) {
+    if (seen[static_cast<size_t>(s)]) continue;
+    // Two sweeps to find a far start vertex of this component, then the ordering sweep.
+    int start = s;
+    for (int sweep = 0; sweep < 2; ++sweep) {
+      scratch.clear();
+      scratch_mark = seen;
+      start = bfs(start, scratch, scratch_mark);
+    }
+    bfs(start, order, seen);
+  }
+  std::reverse(order.begin(), order.end());
+  return order;
+}
+
+}  // namespace
+
+BlockPcg::BlockPcg(const Eigen::SparseMatrix<double>& A) {
+  const RowSparse A0(A);
+  const Eigen::Index n = A0.rows();
+  perm_ = reverse_cuthill_mckee(A0);
+  std::vector<int> inverse(static_cast<size_t>(n));
+  for (Eigen::Index i = 0; i < n; ++i) inverse[static_cast<size_t>(perm_[static_cast<size_t>(i)])] = static_cast<int>(i);
+  // A_ = P A Pᵀ in compressed row-major form, columns sorted within each row.
+  A_.resize(n, n);
+  A_.resizeNonZeros(A0.nonZeros());
+  int* outer = A_.outerIndexPtr();
+  int* inner = A_.innerIndexPtr();
+  double* val = A_.valuePtr();
+  outer[0] = 0;
+  std::vector<std::pair<int, double>> row;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    row.clear();
+    for (RowSparse::InnerIterator it(A0, perm_[static_cast<size_t>(i)]); it; ++it)
+      row.emplace_back(inverse[static_cast<size_t>(it.col())], it.value());
+    std::sort(row.begin(), row.end());
+    int k = outer[i];
+    for (const auto& [c, v] : row) {
+      inner[k] = c;
+      val[k++] = v;
+    }
+    outer[i + 1] = k;
+  }
+  inv_diag_.resize(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
     double d = 0;
     for (RowSparse::InnerIterator it(A_, i); it; ++it)
       if (it.col() == i) d += it.value();
     if (!(d > 0) || !std::isfinite(d)) {
       std::ostringstream os;
-      os << "conjugate gradients: diagonal entry " << i << " = " << d << " is not positive";
+      os << "conjugate gradients: diagonal entry " << perm_[static_cast<size_t>(i)] << " = " << d
+         << " is not positive";
       throw SolverError(os.str());
     }
     inv_diag_(i) = 1.0 / d;
@@ -50,6 +143,21 @@ BlockPcg::BlockPcg(const Eigen::SparseMatrix<double>& A) : A_(A) {
 
 PcgStats BlockPcg::solve(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance, int max_iterations,
                          const std::string& what) const {
+  const Eigen::Index n = A_.rows();
+  Bp_.resize(n, 3);
+  Xp_.resize(n, 3);
+  parallel_for(n, [&](Eigen::Index i) {
+    const Eigen::Index o = perm_[static_cast<size_t>(i)];
+    Bp_.row(i) = B.row(o);
+    Xp_.row(i) = X.row(o);
+  });
+  const PcgStats st = solve_permuted(Bp_, Xp_, relative_tolerance, max_iterations, what);
+  parallel_for(n, [&](Eigen::Index i) { X.row(perm_[static_cast<size_t>(i)]) = Xp_.row(i); });
+  return st;
+}
+
+PcgStats BlockPcg::solve_permuted(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance,
+                                  int max_iterations, const std::string& what) const {
   const Eigen::Index n = A_.rows();
   const int* outer = A_.outerIndexPtr();
   const int* inner = A_.innerIndexPtr();

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <string>
+#include <vector>
 
 namespace msmesh::detail {
 
@@ -36,9 +37,12 @@ class BlockPcg {
   Eigen::Index size() const { return A_.rows(); }
 
  private:
-  RowSparse A_;
+  PcgStats solve_permuted(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance, int max_iterations,
+                          const std::string& what) const;
+  std::vector<int> perm_;  // reverse Cuthill–McKee: position i holds original row perm_[i]
+  RowSparse A_;            // P A Pᵀ
   Eigen::VectorXd inv_diag_;
-  mutable RowMatrixX3 R_, P_, Q_;  // work space (not thread-safe: one solve at a time)
+  mutable RowMatrixX3 R_, P_, Q_, Bp_, Xp_;  // work space (not thread-safe: one solve at a time)
 };
 
 /// Copies between Eigen's default column-major #rows by 3 matrices and the row-major layout.

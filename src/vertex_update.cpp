@@ -102,11 +102,13 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
   if (o.omega2 > 0) A += o.omega2 * SparseMatrix(H.transpose() * H);
   // A tiny floor keeps vertices with ω₃ multiplier 0 and no face (isolated) well-posed.
   A += SparseMatrix(d3.cwiseMax(1e-10).asDiagonal());
-  // Auto: conjugate gradients (linear cost; κ is bounded by about (ω₁·6 + ω₂·16 + ω₃)/ω₃)
-  // unless per-vertex weights lower ω₃ somewhere (inpainting: new vertices are free), which
-  // makes the system badly conditioned: then factor it once.
+  // Auto: the factorisation below kCgMinVertices vertices (cheap there, and exact), conjugate
+  // gradients above (linear cost; κ is bounded by about (6ω₁ + 16ω₂ + ω₃)/ω₃), unless
+  // per-vertex weights lower ω₃ somewhere (inpainting: new vertices are free), which makes
+  // the system badly conditioned: then factor it at any size (docs/performance.md).
+  constexpr Eigen::Index kCgMinVertices = 40000;
   const bool use_cg = o.solver == LinearSolver::CG ||
-                      (o.solver == LinearSolver::Auto && (w3.size() == 0 || w3.minCoeff() >= 0.5));
+                      (o.solver == LinearSolver::Auto && nv >= kCgMinVertices && w3.minCoeff() >= 0.5);
   std::unique_ptr<detail::FixedCholesky> chol;
   std::unique_ptr<detail::BlockPcg> pcg;
   if (use_cg)

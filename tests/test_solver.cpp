@@ -50,8 +50,8 @@ TEST(Solver, ConjugateGradientsMatchCholeskyInTheNormalFilter) {
     EXPECT_LT((a.normals - b.normals).cwiseAbs().maxCoeff(), 1e-6) << preset;
     EXPECT_LT((a.v - b.v).cwiseAbs().maxCoeff(), 1e-6) << preset;
   }
-  // Auto is conjugate gradients for plain denoising.
-  EXPECT_FALSE(filter_with(m, LinearSolver::Auto).n_solver_iterations.empty());
+  // Auto factors small meshes (exact, and faster there).
+  EXPECT_TRUE(filter_with(m, LinearSolver::Auto).n_solver_iterations.empty());
 }
 
 TEST(Solver, TighterToleranceApproachesTheFactorisation) {
@@ -88,17 +88,26 @@ TEST(Solver, ConjugateGradientsMatchCholeskyInTheVertexUpdate) {
   }
 }
 
-TEST(Solver, AutoFactorsWhenWeightsSwitchTheDataTermOff) {
+TEST(Solver, AutoUsesConjugateGradientsOnLargeMeshesUnlessWeightsSwitchTheDataTermOff) {
   // Inpainting gives new vertices ω₃ ≈ 0: the system is then badly conditioned and Auto
-  // factors it; with plain weights Auto uses conjugate gradients.
-  const Mesh m = noisy_cube(4);
-  const Eigen::MatrixXd N = face_normals(make_cube(4).V, m.F);
+  // factors it; with plain weights Auto uses conjugate gradients from 40K vertices.
+  const Mesh m = noisy_cube(82);  // 80688 faces, 40346 vertices
+  ASSERT_GT(m.V.rows(), 40000);
+  const Eigen::MatrixXd N = face_normals(make_cube(82).V, m.F);
   VertexUpdateOptions o;
+  o.max_iterations = 2;
   VertexUpdateWeights w;
   w.vertex_omega3 = Eigen::VectorXd::Ones(m.V.rows());
   EXPECT_FALSE(update_vertices(m.V, m.F, N, {}, o, w).solver_iterations.empty());
   w.vertex_omega3(0) = 0;
   EXPECT_TRUE(update_vertices(m.V, m.F, N, {}, o, w).solver_iterations.empty());
+  NormalFilterOptions no;
+  no.max_iterations = 2;
+  EXPECT_FALSE(filter_normals(m.V, m.F, no).n_solver_iterations.empty());
+  NormalFilterWeights nw;
+  nw.face_alpha = Eigen::VectorXd::Ones(m.F.rows());
+  nw.face_alpha(5) = 0;
+  EXPECT_TRUE(filter_normals(m.V, m.F, no, nw).n_solver_iterations.empty());
 }
 
 TEST(Solver, BadSolverToleranceIsRejectedWithItsRange) {

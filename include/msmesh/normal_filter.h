@@ -33,7 +33,7 @@ struct NormalFilterOptions {
   /// Record the energy (15) after every iteration in NormalFilterResult::energy_history
   /// (costs one extra pass over the edges per iteration).
   bool record_energy = false;
-  /// Solver of the N-step (2αS + r GᵀLG) N = ...; Auto picks conjugate gradients.
+  /// Solver of the N-step (2αS + r GᵀLG) N = ...; Auto: Cholesky below 80K faces, CG above.
   LinearSolver solver = LinearSolver::Auto;
   /// Relative residual at which conjugate gradients stop (solver CG). At 1e-8 the filtered
   /// normals agree with the Cholesky path to about 1e-7 (docs/performance.md).

@@ -7,7 +7,7 @@ namespace msmesh {
 /// V-step of Algorithm 2) are solved. Both give the same result to the solver tolerance
 /// (about 1e-10 relative); they differ in speed and memory (docs/performance.md).
 enum class LinearSolver {
-  Auto,      ///< the faster of the two for this system and size (measured rule, docs/performance.md)
+  Auto,      ///< factorisation below ~80K faces, CG above (measured crossover, docs/performance.md)
   Cholesky,  ///< factor once with CHOLMOD, then two triangular solves per iteration
   CG,        ///< Jacobi-preconditioned conjugate gradients warm-started from the last iterate
 };

@@ -19,7 +19,7 @@ struct VertexUpdateOptions {
   double omega3 = 0.1;   ///< ω₃ > 0, closeness to the input positions (paper range [0.001, 0.1])
   int max_iterations = 30;   ///< k ≥ 1
   double tolerance = 1e-6;   ///< ε₂: stop when the RMS vertex move (mean-edge units) < ε₂
-  /// Solver of the V-step (ω₁KᵀK + ω₂HᵀH + ω₃I) V = ...; Auto picks by size (docs/performance.md).
+  /// Solver of the V-step (ω₁KᵀK + ω₂HᵀH + ω₃I) V = ...; Auto: Cholesky below 40K vertices, CG above.
   LinearSolver solver = LinearSolver::Auto;
   /// Relative residual at which conjugate gradients stop (solver CG).
   double solver_tolerance = 1e-8;
