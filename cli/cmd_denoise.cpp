@@ -20,7 +20,8 @@ namespace msmesh::cli {
 namespace {
 
 struct Args {
-  std::string input, output, truth, field, preset = "auto", method = "nmstv";
+  std::string input, output, truth, field, preset = "auto", method = "nmstv", solver = "auto";
+  double solver_tolerance = 1e-8;
   bool json = false, quiet = false, in_place = false, ascii = false, repair = false;
   double alpha = 0, beta = 0, gamma = 0, rho = 0, epsilon = 0, penalty = 0, nu = 0, v0 = 0;
   int normal_iterations = 0, vertex_iterations = 0;
@@ -83,6 +84,11 @@ void run(const Args& a, const Overrides& ov) {
   if (ov.given("--sigma-r")) o.bilateral.sigma_r = a.sigma_r;
   if (ov.given("--sigma-s")) o.bilateral.sigma_s = a.sigma_s;
   if (ov.given("--bilateral-iterations")) o.bilateral.normal_iterations = a.bilateral_iterations;
+  const LinearSolver solver = a.solver == "cholesky" ? LinearSolver::Cholesky
+                              : a.solver == "cg"     ? LinearSolver::CG
+                                                     : LinearSolver::Auto;
+  o.normals.solver = o.vertices.solver = solver;
+  o.normals.solver_tolerance = o.vertices.solver_tolerance = a.solver_tolerance;
   o.validate();
   check_memory(denoise_memory_estimate(mesh.V.rows(), mesh.F.rows(), o), a.input + ": denoising " +
                std::to_string(mesh.V.rows()) + " vertices and " + std::to_string(mesh.F.rows()) + " faces");
@@ -133,6 +139,8 @@ void run(const Args& a, const Overrides& ov) {
     j.add("seconds_read", t_read).add("seconds_normals", r.seconds_normals)
         .add("seconds_vertices", r.seconds_vertices).add("seconds_write", t_write);
     j.add("normal_iterations", r.normal_report.iterations).add("vertex_iterations", r.vertex_report.iterations);
+    j.add("n_step_cg_sweeps", r.normal_report.n_solver_iterations)
+        .add("v_step_cg_sweeps", r.vertex_report.solver_iterations);
     j.add("residual_history", r.normal_report.residual_history);
     j.add("normal_change_history", r.normal_report.change_history);
     j.add("vertex_change_history", r.vertex_report.change_history);
@@ -225,6 +233,15 @@ const Registrar reg("denoise", 50, [](CLI::App& app) {
   c->add_option("--truth", a->truth, "Ground-truth mesh: print error figures of input and result");
   c->add_option("--save-field", a->field, "Write the edge field v (.txt: 'i j v' per edge; .ply: coloured edges)");
   c->add_option("--report", a->report, "Write an HTML report: 3D viewer, parameters, errors, convergence plots");
+  c->add_option("--solver", a->solver,
+                "Linear solver of the fixed systems: auto (Cholesky below 80K faces, conjugate gradients above), "
+                "cholesky, cg")
+      ->check(CLI::IsMember({"auto", "cholesky", "cg"}))
+      ->capture_default_str()
+      ->group("Performance");
+  c->add_option("--solver-tolerance", a->solver_tolerance, "Relative residual at which conjugate gradients stop, in (0, 1)")
+      ->capture_default_str()
+      ->group("Performance");
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
   c->add_flag("-q,--quiet", a->quiet, "No progress bar");
   c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");

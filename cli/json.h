@@ -24,6 +24,11 @@ class Json {
     for (size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + number(v[i]);
     return raw(key, s + "]");
   }
+  Json& add(const std::string& key, const std::vector<int>& v) {
+    std::string s = "[";
+    for (size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + std::to_string(v[i]);
+    return raw(key, s + "]");
+  }
   Json& add(const std::string& key, const std::vector<Json>& v) {
     std::string s = "[";
     for (size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + v[i].str();
