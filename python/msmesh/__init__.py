@@ -14,10 +14,18 @@ after every iteration; returning False cancels the call (Cancelled), returning N
 continues; an exception it raises is re-raised by the call.
 """
 
-import numpy as np
+import os
 
-from . import _checks
-from ._core import (
+# OpenMP threads waiting at a barrier spin by default, which makes runs several times slower
+# on a busy machine (docs/performance.md); libgomp reads this once, when the extension
+# loads it below, so set the passive policy unless the user chose one.
+if "OMP_WAIT_POLICY" not in os.environ and "GOMP_SPINCOUNT" not in os.environ:
+    os.environ["OMP_WAIT_POLICY"] = "passive"
+
+import numpy as np  # noqa: E402
+
+from . import _checks  # noqa: E402
+from ._core import (  # noqa: E402
     BilateralOptions,
     Cancelled,
     DenoiseMethod,
@@ -25,6 +33,7 @@ from ._core import (
     Error,
     InvalidInputError,
     IoError,
+    LinearSolver,
     NormalFilterOptions,
     ProgressEvent,
     SolverError,
@@ -38,7 +47,7 @@ __all__ = [
     "denoise", "filter_normals", "update_vertices", "add_noise", "evaluate", "choose_preset",
     "read_mesh", "write_mesh", "repair", "make_shape", "shape_names", "preset_names", "PARAMETERS",
     "Error", "InvalidInputError", "IoError", "SolverError", "Cancelled", "ProgressEvent",
-    "DenoiseOptions", "DenoiseMethod", "NormalFilterOptions", "VertexUpdateOptions", "BilateralOptions",
+    "DenoiseOptions", "DenoiseMethod", "LinearSolver", "NormalFilterOptions", "VertexUpdateOptions", "BilateralOptions",
 ]
 
 _METHODS = {"nmstv": DenoiseMethod.NMSTV, "mstv": DenoiseMethod.MSTV, "bilateral": DenoiseMethod.Bilateral}
@@ -64,11 +73,18 @@ PARAMETERS = {
     "sigma_r": (float, [("bilateral", "sigma_r")]),
     "sigma_s": (float, [("bilateral", "sigma_s")]),
     "bilateral_iterations": (int, [("bilateral", "normal_iterations")]),
+    "solver": (LinearSolver, [("normals", "solver"), ("vertices", "solver")]),
+    "solver_tolerance": (float, [("normals", "solver_tolerance"), ("vertices", "solver_tolerance")]),
 }
+_SOLVERS = {"auto": LinearSolver.Auto, "cholesky": LinearSolver.Cholesky, "cg": LinearSolver.CG}
 _NORMAL_PARAMETERS = {k: PARAMETERS[k] for k in
                       ("alpha", "beta", "gamma", "rho", "epsilon", "penalty", "nu", "v0", "normal_iterations")}
+_NORMAL_PARAMETERS["solver"] = (LinearSolver, [("normals", "solver")])
+_NORMAL_PARAMETERS["solver_tolerance"] = (float, [("normals", "solver_tolerance")])
 _VERTEX_PARAMETERS = {"omega1": PARAMETERS["omega1"], "omega2": PARAMETERS["omega2"],
-                      "omega3": PARAMETERS["omega3"], "vertex_iterations": (int, [("vertices", "max_iterations")])}
+                      "omega3": PARAMETERS["omega3"], "vertex_iterations": (int, [("vertices", "max_iterations")]),
+                      "solver": (LinearSolver, [("vertices", "solver")]),
+                      "solver_tolerance": (float, [("vertices", "solver_tolerance")])}
 
 
 def preset_names():
@@ -90,7 +106,9 @@ def _apply_parameters(options, params, table, function):
             raise TypeError(f"{function}() got an unexpected keyword argument '{name}'; "
                             f"parameters: {', '.join(table)}")
         kind, targets = table[name]
-        if kind is int:
+        if kind is LinearSolver:
+            value = _SOLVERS[_checks.choice(value, name, tuple(_SOLVERS))]
+        elif kind is int:
             value = _checks.integer(value, name)
         elif kind is bool:
             value = _checks.boolean(value, name)

@@ -177,6 +177,7 @@ py::dict normal_report(const NormalFilterResult& r) {
   d["normal_change_history"] = r.change_history;
   d["energy_history"] = r.energy_history;
   d["v_solver_iterations"] = r.v_solver_iterations;
+  d["n_solver_iterations"] = r.n_solver_iterations;
   return d;
 }
 
@@ -185,6 +186,7 @@ void add_vertex_report(py::dict& d, const VertexUpdateResult& r) {
   d["vertex_converged"] = r.converged;
   d["vertex_change_history"] = r.change_history;
   d["fallback_projections"] = static_cast<long long>(r.fallback_projections);
+  d["vertex_solver_iterations"] = r.solver_iterations;
 }
 
 py::dict denoise_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const DenoiseOptions& options,
@@ -499,6 +501,11 @@ void bind_options(py::module_& m) {
       .value("MSTV", DenoiseMethod::MSTV)
       .value("Bilateral", DenoiseMethod::Bilateral);
 
+  py::enum_<LinearSolver>(m, "LinearSolver", "Solver of the fixed systems (see solver.h).")
+      .value("Auto", LinearSolver::Auto)
+      .value("Cholesky", LinearSolver::Cholesky)
+      .value("CG", LinearSolver::CG);
+
   py::class_<NormalFilterOptions>(m, "NormalFilterOptions", "Options of Algorithm 1 (see normal_filter.h).")
       .def(py::init<>())
       .def_readwrite("alpha", &NormalFilterOptions::alpha)
@@ -513,6 +520,8 @@ void bind_options(py::module_& m) {
       .def_readwrite("reweight", &NormalFilterOptions::reweight)
       .def_readwrite("v_initial", &NormalFilterOptions::v_initial)
       .def_readwrite("project_each_iteration", &NormalFilterOptions::project_each_iteration)
+      .def_readwrite("solver", &NormalFilterOptions::solver)
+      .def_readwrite("solver_tolerance", &NormalFilterOptions::solver_tolerance)
       .def("validate", &NormalFilterOptions::validate);
 
   py::class_<VertexUpdateOptions>(m, "VertexUpdateOptions", "Options of Algorithm 2 (see vertex_update.h).")
@@ -522,6 +531,8 @@ void bind_options(py::module_& m) {
       .def_readwrite("omega3", &VertexUpdateOptions::omega3)
       .def_readwrite("max_iterations", &VertexUpdateOptions::max_iterations)
       .def_readwrite("tolerance", &VertexUpdateOptions::tolerance)
+      .def_readwrite("solver", &VertexUpdateOptions::solver)
+      .def_readwrite("solver_tolerance", &VertexUpdateOptions::solver_tolerance)
       .def("validate", &VertexUpdateOptions::validate);
 
   py::class_<BilateralOptions>(m, "BilateralOptions", "Options of bilateral normal filtering (see denoise.h).")

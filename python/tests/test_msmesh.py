@@ -393,3 +393,15 @@ def test_inpaint_fills_punched_holes():
     assert msmesh.find_holes(V2, F2) == []
     e = msmesh.inpaint_errors(Vh, Fh, V2, F2, V, F)
     assert e["points"] > 0 and 0 <= e["distance_max"] < 0.2  # a sanity bound; quality is tested in C++
+
+
+def test_solver_choice_gives_the_same_result():
+    V, F = msmesh.make_shape("cube", 6)
+    Vn = msmesh.add_noise(V, F, sigma=0.2, seed=3)
+    a, ra = msmesh.denoise(Vn, F, preset="cad", solver="cholesky")
+    b, rb = msmesh.denoise(Vn, F, preset="cad", solver="cg", solver_tolerance=1e-10)
+    assert np.abs(a - b).max() < 1e-6
+    assert sum(rb["n_solver_iterations"]) > 0 and sum(ra["n_solver_iterations"]) == 0
+    assert sum(rb["vertex_solver_iterations"]) > 0
+    with pytest.raises(msmesh.InvalidInputError, match="solver"):
+        msmesh.denoise(Vn, F, solver="lu")
