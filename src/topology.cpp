@@ -51,6 +51,9 @@ Topology build_topology(const Eigen::MatrixXi& F, Eigen::Index num_vertices) {
   };
   for (size_t v = 0; v + 1 < start.size(); ++v) {
     const auto b = he.begin() + start[v], e = he.begin() + start[v + 1];
+    // Nothing to sort; also keeps `b + 1` inside the array (UBSan: offset applied to the null
+    // data pointer of an empty array when F has no faces).
+    if (e - b < 2) continue;
     if (e - b < 32) {  // insertion sort: buckets hold a vertex's few edges
       for (auto i = b + 1; i < e; ++i)
         for (auto j = i; j > b && less(*j, *(j - 1)); --j) std::iter_swap(j, j - 1);
