@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -14,6 +15,7 @@
 #include "normalize.h"
 #include "parallel.h"
 #include "pcg.h"
+#include "sparse_build.h"
 #include "sparse_solve.h"
 
 namespace msmesh {
@@ -35,7 +37,6 @@ void VertexUpdateOptions::validate() const {
 
 namespace {
 
-using Triplet = Eigen::Triplet<double>;
 
 // The vertex opposite edge slot k of face f is F(f,k) (face_edges(f,k) is opposite corner k).
 int opposite_vertex(const Eigen::MatrixXi& F, const Topology& t, int f, Eigen::Index e) {
@@ -72,36 +73,74 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
   const detail::Normalization norm = detail::normalization_for(V, F, edge_lengths(V, topo).mean());
   const Eigen::MatrixXd V0 = norm.apply(V);
 
-  // K (3T×P): row 3i+k gives corner k of face i minus the face's mean (the centring matrix M).
-  std::vector<Triplet> kt;
-  kt.reserve(static_cast<size_t>(9 * nf));
-  for (Eigen::Index f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k)
-      for (int j = 0; j < 3; ++j) kt.emplace_back(3 * f + k, F(f, j), (j == k ? 2.0 : -1.0) / 3.0);
-  SparseMatrix K(3 * nf, nv);
-  K.setFromTriplets(kt.begin(), kt.end());
-  // H: row per interior edge e = (i1,i2) with opposite vertices i3, i4: v_e (x1 + x2 − x3 − x4).
-  std::vector<Triplet> ht;
-  Eigen::Index hrows = 0;
-  for (Eigen::Index e = 0; e < ne; ++e) {
-    if (!topo.edge_is_interior[e]) continue;
-    const int i3 = opposite_vertex(F, topo, topo.edge_faces(e, 0), e);
-    const int i4 = opposite_vertex(F, topo, topo.edge_faces(e, 1), e);
-    const double ve = v(e);
-    ht.emplace_back(hrows, topo.edges(e, 0), ve);
-    ht.emplace_back(hrows, topo.edges(e, 1), ve);
-    ht.emplace_back(hrows, i3, -ve);
-    ht.emplace_back(hrows, i4, -ve);
-    ++hrows;
-  }
-  SparseMatrix H(hrows, nv);
-  H.setFromTriplets(ht.begin(), ht.end());
+  // eq. 27: (ω₁KᵀK + ω₂HᵀH + ω₃I) V = ω₁KᵀP + ω₃V⁰, with
+  //  K (3T×P): row 3i+k gives corner k of face i minus the face's mean (the centring matrix
+  //    M = I − 11ᵀ/3, so KᵀK adds M = 2/3 on the diagonal, −1/3 between corners, per face);
+  //  H: row per interior edge e = (i1,i2) with opposite vertices i3, i4: v_e (x1 + x2 − x3 − x4).
+  // Built row by row from the vertex's corners and edge roles (no triplets, no products).
   const Eigen::VectorXd d3 = o.omega3 * w3;
-  // eq. 27: (ω₁KᵀK + ω₂HᵀH + ω₃I) V = ω₁KᵀP + ω₃V⁰; factor once.
-  SparseMatrix A = o.omega1 * SparseMatrix(K.transpose() * K);
-  if (o.omega2 > 0) A += o.omega2 * SparseMatrix(H.transpose() * H);
-  // A tiny floor keeps vertices with ω₃ multiplier 0 and no face (isolated) well-posed.
-  A += SparseMatrix(d3.cwiseMax(1e-10).asDiagonal());
+  // Corners of each vertex: (f, k) as 3f + k.
+  std::vector<int> corner_start(static_cast<size_t>(nv) + 1, 0), corners(static_cast<size_t>(3 * nf));
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) ++corner_start[static_cast<size_t>(F(f, k)) + 1];
+  for (size_t i = 0; i < static_cast<size_t>(nv); ++i) corner_start[i + 1] += corner_start[i];
+  {
+    std::vector<int> fill(corner_start.begin(), corner_start.end() - 1);
+    for (Eigen::Index f = 0; f < nf; ++f)
+      for (int k = 0; k < 3; ++k) corners[static_cast<size_t>(fill[static_cast<size_t>(F(f, k))]++)] = static_cast<int>(3 * f + k);
+  }
+  // The four vertices (+,+,−,−) of each interior edge's H row, and each vertex's roles in them.
+  std::vector<std::array<int, 4>> quad;
+  std::vector<double> quad_v;
+  std::vector<int> role_start(static_cast<size_t>(nv) + 1, 0), roles;
+  if (o.omega2 > 0) {
+    for (Eigen::Index e = 0; e < ne; ++e) {
+      if (!topo.edge_is_interior[e]) continue;
+      quad.push_back({topo.edges(e, 0), topo.edges(e, 1), opposite_vertex(F, topo, topo.edge_faces(e, 0), e),
+                      opposite_vertex(F, topo, topo.edge_faces(e, 1), e)});
+      quad_v.push_back(v(e));
+    }
+    for (const auto& q : quad)
+      for (int r = 0; r < 4; ++r) ++role_start[static_cast<size_t>(q[r]) + 1];
+    for (size_t i = 0; i < static_cast<size_t>(nv); ++i) role_start[i + 1] += role_start[i];
+    roles.resize(4 * quad.size());
+    std::vector<int> fill(role_start.begin(), role_start.end() - 1);
+    for (size_t h = 0; h < quad.size(); ++h)
+      for (int r = 0; r < 4; ++r) roles[static_cast<size_t>(fill[static_cast<size_t>(quad[h][r])]++)] = static_cast<int>(4 * h + r);
+  }
+  SparseMatrix A = detail::symmetric_from_rows(
+      nv,
+      [&](Eigen::Index i) {
+        const size_t u = static_cast<size_t>(i);
+        return 1 + 3 * (corner_start[u + 1] - corner_start[u]) +
+               (o.omega2 > 0 ? 4 * (role_start[u + 1] - role_start[u]) : 0);
+      },
+      [&](Eigen::Index i, int* col, double* val) {
+        const size_t u = static_cast<size_t>(i);
+        int n = 0;
+        // A tiny floor keeps vertices with ω₃ multiplier 0 and no face (isolated) well-posed.
+        col[n] = static_cast<int>(i);
+        val[n++] = std::max(d3(i), 1e-10);
+        for (int c = corner_start[u]; c < corner_start[u + 1]; ++c) {
+          const Eigen::Index f = corners[static_cast<size_t>(c)] / 3;
+          const int a = corners[static_cast<size_t>(c)] % 3;
+          for (int b = 0; b < 3; ++b) {
+            col[n] = F(f, b);
+            val[n++] = o.omega1 * ((a == b ? 1.0 : 0.0) - 1.0 / 3.0);
+          }
+        }
+        if (o.omega2 > 0)
+          for (int r = role_start[u]; r < role_start[u + 1]; ++r) {
+            const size_t h = static_cast<size_t>(roles[static_cast<size_t>(r)]) / 4;
+            const int ri = roles[static_cast<size_t>(r)] % 4;
+            const double ve = quad_v[h], si = ri < 2 ? 1.0 : -1.0;
+            for (int t = 0; t < 4; ++t) {
+              col[n] = quad[h][t];
+              val[n++] = o.omega2 * ve * ve * si * (t < 2 ? 1.0 : -1.0);
+            }
+          }
+        return n;
+      });
   // Auto: the factorisation below kCgMinVertices vertices (cheap there, and exact), conjugate
   // gradients above (linear cost; κ is bounded by about (6ω₁ + 16ω₂ + ω₃)/ω₃), unless
   // per-vertex weights lower ω₃ somewhere (inpainting: new vertices are free), which makes
@@ -116,8 +155,6 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
   else
     chol = std::make_unique<detail::FixedCholesky>(A, "vertex update");
   A = SparseMatrix();
-  const detail::RowSparse Kt = o.omega1 * K.transpose();  // row-major: one row per vertex
-  K = SparseMatrix();
   using Rows = detail::RowMatrixX3;
   const Rows rhs0 = detail::to_rows(d3.asDiagonal() * V0);
 
@@ -148,7 +185,12 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
     // V-step (eq. 27): rhs = ω₁KᵀP + ω₃V⁰, row by row.
     detail::parallel_for(nv, [&](Eigen::Index i) {
       Eigen::RowVector3d b = rhs0.row(i);
-      for (detail::RowSparse::InnerIterator it(Kt, i); it; ++it) b += it.value() * P.row(it.col());
+      // ω₁KᵀP: each corner of the vertex adds its row of P minus the mean of its face's rows.
+      for (int c = corner_start[static_cast<size_t>(i)]; c < corner_start[static_cast<size_t>(i) + 1]; ++c) {
+        const Eigen::Index f = corners[static_cast<size_t>(c)] / 3;
+        const int a = corners[static_cast<size_t>(c)] % 3;
+        b += o.omega1 * (P.row(3 * f + a) - (P.row(3 * f) + P.row(3 * f + 1) + P.row(3 * f + 2)) / 3.0);
+      }
       rhs.row(i) = b;
     });
     if (use_cg && k >= 1) {
