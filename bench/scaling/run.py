@@ -37,7 +37,8 @@ def main():
     args = ap.parse_args()
     env = dict(os.environ)
     env.setdefault("OMP_WAIT_POLICY", "passive")  # what the msmesh program sets for itself
-    env.setdefault("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1")
+    env.setdefault("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=33554432:"
+                   "glibc.malloc.top_pad=67108864:glibc.malloc.trim_threshold=1073741824")
     rows = []
     for s in args.sizes.split(","):
         best = None
