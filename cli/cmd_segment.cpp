@@ -11,6 +11,7 @@
 #include "msmesh/denoise.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
+#include "msmesh/render.h"
 #include "msmesh/segment.h"
 #include "report.h"
 
@@ -23,22 +24,6 @@ struct Args {
   double angle = 15.0, clamp = 0.001, min_area = -1;
   std::string report;  // --report: HTML report (cli/report.h)
 };
-
-// Distinct colours: hues stepped by the golden ratio, so neighbouring labels differ a lot.
-Eigen::Vector3d label_color(int label) {
-  const double h = std::fmod(0.11 + 0.618033988749895 * label, 1.0) * 6.0;
-  const double s = (label % 3 == 2) ? 0.45 : 0.7, v = (label % 2) ? 0.8 : 0.95;
-  const int i = static_cast<int>(h) % 6;
-  const double f = h - std::floor(h), p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
-  switch (i) {
-    case 0: return {v, t, p};
-    case 1: return {q, v, p};
-    case 2: return {p, v, t};
-    case 3: return {p, q, v};
-    case 4: return {t, p, v};
-    default: return {v, p, q};
-  }
-}
 
 // The faces of one segment as a mesh of their own, vertices re-indexed in order of use.
 Mesh extract_part(const Mesh& m, const Eigen::VectorXi& labels, int label) {

@@ -23,6 +23,7 @@
 #include "msmesh/mesh.h"
 #include "msmesh/metrics.h"
 #include "msmesh/topology.h"
+#include "union_find.h"
 
 namespace msmesh {
 
@@ -37,16 +38,7 @@ std::string num(double x) {
   return os.str();
 }
 
-// Union-find with path halving.
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(int a, int b) { parent[find(a)] = find(b); }
-};
+using detail::UnionFind;
 
 // Undirected vertex adjacency of F with edge lengths.
 struct Adjacency {

@@ -1,7 +1,6 @@
 #include "msmesh/normal_filter.h"
 
 #include <cmath>
-#include <memory>
 #include <sstream>
 
 #include "msmesh/errors.h"
@@ -86,6 +85,17 @@ Eigen::VectorXd ones_or(const Eigen::VectorXd& w, Eigen::Index n, const char* wh
       throw InvalidInput(os.str());
     }
   return w;
+}
+
+// Scales every row of N to unit length; a zero or non-finite row takes the row of `fallback`.
+void normalize_rows(detail::RowMatrixX3& N, const detail::RowMatrixX3& fallback) {
+  detail::parallel_for(N.rows(), [&](Eigen::Index f) {
+    const double l = N.row(f).norm();
+    if (l > 0 && std::isfinite(l))
+      N.row(f) /= l;
+    else
+      N.row(f) = fallback.row(f);
+  });
 }
 
 // c · Dᵀ L_W D (#E by #E), assembled from the corner lines: line l = 3f+k joins the edge
@@ -231,12 +241,7 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
   const bool use_cg =
       o.solver == LinearSolver::CG ||
       (o.solver == LinearSolver::Auto && nf >= kCgMinFaces && face_alpha.minCoeff() >= 0.5);
-  std::unique_ptr<detail::FixedCholesky> chol;
-  std::unique_ptr<detail::BlockPcg> pcg;
-  if (use_cg)
-    pcg = std::make_unique<detail::BlockPcg>(A);
-  else
-    chol = std::make_unique<detail::FixedCholesky>(A, "normal filtering (N-step)");
+  const detail::ConstantSystem n_step(A, use_cg, "normal filtering (N-step)");
   A = SparseMatrix();
 
   // Gᵀ L per face: face f meets edge face_edges(f,k) with sign gt_sign(f,k) (+1 when f is the
@@ -282,26 +287,14 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
       rhs.row(f) = b;
     });
     N_prev = N;
-    if (use_cg) {
-      const detail::PcgStats st = pcg->solve(rhs, N, o.solver_tolerance, 10000, "normal filtering (N-step)");
-      res.n_solver_iterations.push_back(st.iterations);
-    } else {
-      N = chol->solve(Eigen::MatrixXd(rhs), "normal filtering (N-step)");
-    }
+    const int sweeps = n_step.solve(rhs, N, o.solver_tolerance);
+    if (sweeps >= 0) res.n_solver_iterations.push_back(sweeps);
     // The paper projects N onto the unit sphere after every N-step. That makes the splitting
     // inconsistent (p and λ then refer to another N than the linear N-step produces): for
     // α ≲ 1 or heavy noise the residual grows and the normals end up worse than the input
     // (gnf fandisk 0.7: normal MSAE 1106e-3 at α = 0.5 against 818e-3 for the noisy input).
     // Default: solve the relaxed problem and project once after the loop (docs/presets.md).
-    if (o.project_each_iteration) {
-      detail::parallel_for(nf, [&](Eigen::Index f) {
-        const double l = N.row(f).norm();
-        if (l > 0 && std::isfinite(l))
-          N.row(f) /= l;
-        else
-          N.row(f) = N_prev.row(f);
-      });
-    }
+    if (o.project_each_iteration) normalize_rows(N, N_prev);
     const double change = std::sqrt(std::max(0.0, detail::deterministic_sums<1>(nf, [&](Eigen::Index f0, Eigen::Index f1,
                                                                                          std::array<double, 1>& s) {
       for (Eigen::Index f = f0; f < f1; ++f) s[0] += area(f) * (N.row(f) - N_prev.row(f)).squaredNorm();
@@ -360,13 +353,7 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
       break;
     }
   }
-  detail::parallel_for(nf, [&](Eigen::Index f) {
-    const double l = N.row(f).norm();
-    if (l > 0 && std::isfinite(l))
-      N.row(f) /= l;
-    else
-      N.row(f) = N0r.row(f);
-  });
+  normalize_rows(N, N0r);
   res.normals = N;
   res.v = std::move(v);
   return res;

@@ -380,7 +380,8 @@ Eigen::Vector3d heat_color(double x) {
 }
 
 Eigen::Vector3d label_color(int label) {
-  // Same formula as cli/cmd_segment.cpp, so pictures and .ply outputs agree.
+  // Distinct colours: hues stepped by the golden ratio, so neighbouring labels differ a lot.
+  // Used for pictures, reports and segment's .ply output alike.
   if (label < 0) return {0.5, 0.5, 0.5};
   const double h = std::fmod(0.11 + 0.618033988749895 * label, 1.0) * 6.0;
   const double s = (label % 3 == 2) ? 0.45 : 0.7, v = (label % 2) ? 0.8 : 0.95;

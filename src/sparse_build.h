@@ -35,7 +35,8 @@ Eigen::SparseMatrix<double> symmetric_from_rows(Eigen::Index n, Capacity&& capac
           std::swap(val[k], val[k - 1]);
         }
     } else {  // (column, value) pairs: the sort is deterministic, so is the sum of repeats
-      std::vector<std::pair<int, double>> pairs(m);
+      thread_local std::vector<std::pair<int, double>> pairs;
+      pairs.resize(m);
       for (size_t a = 0; a < m; ++a) pairs[a] = {col[b + a], val[b + a]};
       std::sort(pairs.begin(), pairs.end());
       for (size_t a = 0; a < m; ++a) {

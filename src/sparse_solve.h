@@ -5,10 +5,12 @@
 // supernodal variant was slower on these very sparse mesh matrices (docs/performance.md).
 #pragma once
 #include <Eigen/CholmodSupport>
+#include <memory>
 #include <string>
 
 #include "msmesh/errors.h"
 #include "msmesh/operators.h"
+#include "pcg.h"
 
 namespace msmesh::detail {
 
@@ -27,6 +29,31 @@ class FixedCholesky {
 
  private:
   Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower> chol_;
+};
+
+/// A system A X = B that stays the same over the iterations (N-step, vertex update), solved
+/// by factoring once or by warm-started conjugate gradients (pcg.h); callers pick which.
+class ConstantSystem {
+ public:
+  ConstantSystem(const SparseMatrix& A, bool conjugate_gradients, std::string what) : what_(std::move(what)) {
+    if (conjugate_gradients)
+      pcg_ = std::make_unique<BlockPcg>(A);
+    else
+      chol_ = std::make_unique<FixedCholesky>(A, what_);
+  }
+  /// Solves A X = B; X holds the warm start for CG. Returns the CG sweeps, or −1 when the
+  /// system was factored. Throws SolverError naming the system.
+  int solve(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance) const {
+    if (pcg_) return pcg_->solve(B, X, relative_tolerance, 100000, what_).iterations;
+    X = chol_->solve(Eigen::MatrixXd(B), what_);
+    return -1;
+  }
+  bool iterative() const { return pcg_ != nullptr; }
+
+ private:
+  std::string what_;
+  std::unique_ptr<FixedCholesky> chol_;
+  std::unique_ptr<BlockPcg> pcg_;
 };
 
 }  // namespace msmesh::detail

@@ -1,12 +1,12 @@
 #include "msmesh/topology.h"
 
-#include "msmesh/errors.h"
-
 #include <algorithm>
-#include <string>
 #include <cstdint>
-#include <numeric>
+#include <string>
 #include <unordered_map>
+
+#include "msmesh/errors.h"
+#include "union_find.h"
 
 namespace msmesh {
 
@@ -104,19 +104,7 @@ Topology build_topology(const Eigen::MatrixXi& F, Eigen::Index num_vertices) {
   return t;
 }
 
-namespace {
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(int a, int b) { parent[find(a)] = find(b); }
-};
-
-}  // namespace
+using detail::UnionFind;
 
 Eigen::VectorXi face_components(const Topology& topo, int* count) {
   const Eigen::Index nf = topo.num_faces();

@@ -4,7 +4,6 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <cmath>
-#include <memory>
 #include <sstream>
 
 #include "msmesh/errors.h"
@@ -148,12 +147,7 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
   constexpr Eigen::Index kCgMinVertices = 40000;
   const bool use_cg = o.solver == LinearSolver::CG ||
                       (o.solver == LinearSolver::Auto && nv >= kCgMinVertices && w3.minCoeff() >= 0.5);
-  std::unique_ptr<detail::FixedCholesky> chol;
-  std::unique_ptr<detail::BlockPcg> pcg;
-  if (use_cg)
-    pcg = std::make_unique<detail::BlockPcg>(A);
-  else
-    chol = std::make_unique<detail::FixedCholesky>(A, "vertex update");
+  const detail::ConstantSystem v_step(A, use_cg, "vertex update");
   A = SparseMatrix();
   using Rows = detail::RowMatrixX3;
   const Rows rhs0 = detail::to_rows(d3.asDiagonal() * V0);
@@ -193,27 +187,21 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
       }
       rhs.row(i) = b;
     });
-    if (use_cg && k >= 1) {
+    X_prev = X;
+    if (v_step.iterative() && k >= 1) {
       // Warm start on the secant X_k + (X_k − X_{k−1}): the vertices move smoothly from one
       // iteration to the next, and this saves about a fifth of the CG sweeps (Cone: 1153 →
       // 940). Only the starting point changes, not the solution.
-      X_prev = X;
-      X += X - X_old;
-    } else {
-      X_prev = X;
+      X += X_prev - X_old;
     }
-    if (use_cg) {
-      const detail::PcgStats st = pcg->solve(rhs, X, o.solver_tolerance, 100000, "vertex update");
-      res.solver_iterations.push_back(st.iterations);
-    } else {
-      X = chol->solve(Eigen::MatrixXd(rhs), "vertex update");
-    }
+    const int sweeps = v_step.solve(rhs, X, o.solver_tolerance);
+    if (sweeps >= 0) res.solver_iterations.push_back(sweeps);
     const double change = std::sqrt(detail::deterministic_sums<1>(nv, [&](Eigen::Index i0, Eigen::Index i1,
                                                                            std::array<double, 1>& s) {
                                        for (Eigen::Index i = i0; i < i1; ++i) s[0] += (X.row(i) - X_prev.row(i)).squaredNorm();
                                      })[0] /
                                      double(nv));
-    X_old = X_prev;
+    if (v_step.iterative()) X_old = X_prev;
     res.change_history.push_back(change);
     res.iterations = k + 1;
     res.fallback_projections = fallbacks;

@@ -6,6 +6,8 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "msmesh/mesh.h"
@@ -51,6 +53,20 @@ inline Mesh fin() {
   m.F.resize(3, 3);
   m.F << 0, 1, 2, 1, 0, 3, 0, 1, 4;
   return m;
+}
+
+/// Writes `bytes` to `path` as they are (binary).
+inline void write_bytes(const std::string& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+/// The whole content of `path` (empty when it cannot be read).
+inline std::string read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream os;
+  os << in.rdbuf();
+  return os.str();
 }
 
 /// Result of running the msmesh program: exit status and combined stdout/stderr.

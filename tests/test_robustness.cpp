@@ -22,7 +22,9 @@
 #include "test_helpers.h"
 
 using namespace msmesh;
+using msmesh::test::read_bytes;
 using msmesh::test::run_cli;
+using msmesh::test::write_bytes;
 namespace fs = std::filesystem;
 
 namespace {
@@ -48,18 +50,6 @@ class TempDir {
  private:
   fs::path path_;
 };
-
-void write_bytes(const std::string& path, const std::string& bytes) {
-  std::ofstream out(path, std::ios::binary);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
-
-std::string read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
-}
 
 /// Deterministic noise of amplitude `sigma` on every vertex (all three coordinates).
 Mesh noisy(Mesh m, double sigma, unsigned seed = 1) {
