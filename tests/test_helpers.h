@@ -1,14 +1,19 @@
 // Small meshes built in code, shared by the tests.
 #pragma once
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
+#include <random>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "msmesh/mesh.h"
 
@@ -54,6 +59,37 @@ inline Mesh fin() {
   m.F << 0, 1, 2, 1, 0, 3, 0, 1, 4;
   return m;
 }
+
+/// A fresh folder under the system temporary directory, removed with its content.
+class TempDir {
+ public:
+  TempDir() {
+    static std::atomic<int> counter{0};
+    std::random_device rd;
+    path_ = std::filesystem::temp_directory_path() / ("msmesh_test_" + std::to_string(::getpid()) + "_" +
+                                                      std::to_string(counter++) + "_" + std::to_string(rd()));
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+  const std::filesystem::path& path() const { return path_; }
+  /// The names of the entries, sorted.
+  std::vector<std::string> listing() const {
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(path_)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+  std::size_t entries() const { return listing().size(); }
+
+ private:
+  std::filesystem::path path_;
+};
 
 /// Writes `bytes` to `path` as they are (binary).
 inline void write_bytes(const std::string& path, const std::string& bytes) {

@@ -20,36 +20,10 @@
 using namespace msmesh;
 using msmesh::test::read_bytes;
 using msmesh::test::write_bytes;
+using msmesh::test::TempDir;
 namespace fs = std::filesystem;
 
 namespace {
-
-/// A fresh folder under the system temporary directory, removed with its content.
-class TempDir {
- public:
-  TempDir() {
-    static std::atomic<int> counter{0};
-    std::random_device rd;
-    path_ = fs::temp_directory_path() /
-            ("msmesh_test_io_" + std::to_string(::getpid()) + "_" + std::to_string(counter++) + "_" + std::to_string(rd()));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-  const fs::path& path() const { return path_; }
-  std::vector<std::string> listing() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(path_)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
- private:
-  fs::path path_;
-};
 
 /// A grid with coordinates that need all 17 significant digits.
 Mesh awkward_mesh() {

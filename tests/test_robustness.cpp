@@ -25,31 +25,10 @@ using namespace msmesh;
 using msmesh::test::read_bytes;
 using msmesh::test::run_cli;
 using msmesh::test::write_bytes;
+using msmesh::test::TempDir;
 namespace fs = std::filesystem;
 
 namespace {
-
-class TempDir {
- public:
-  TempDir() {
-    static std::atomic<int> counter{0};
-    std::random_device rd;
-    path_ = fs::temp_directory_path() / ("msmesh_test_rob_" + std::to_string(::getpid()) + "_" +
-                                         std::to_string(counter++) + "_" + std::to_string(rd()));
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-  std::size_t entries() const {
-    return static_cast<std::size_t>(std::distance(fs::directory_iterator(path_), fs::directory_iterator()));
-  }
-
- private:
-  fs::path path_;
-};
 
 /// Deterministic noise of amplitude `sigma` on every vertex (all three coordinates).
 Mesh noisy(Mesh m, double sigma, unsigned seed = 1) {
