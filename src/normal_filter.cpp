@@ -1,6 +1,7 @@
 #include "msmesh/normal_filter.h"
 
 #include <cmath>
+#include <exception>
 #include <sstream>
 
 #include "msmesh/errors.h"
@@ -13,6 +14,10 @@
 #include "pcg.h"
 #include "sparse_build.h"
 #include "sparse_solve.h"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace msmesh {
 
@@ -276,8 +281,8 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
   const Eigen::VectorXd& area = ops.face_areas;
 
   NormalFilterResult res;
-  for (int k = 0; k < o.max_iterations; ++k) {
-    // 1. N-step: (2αS + r GᵀLG) N = 2αS N⁰ + GᵀL (r p + λ).
+  // 1. N-step right-hand side: 2αS N⁰ + GᵀL (r p + λ), face by face.
+  auto build_rhs = [&] {
     detail::parallel_for(nf, [&](Eigen::Index f) {
       Eigen::RowVector3d b = fid_weight(f) * N0r.row(f);
       for (int j = 0; j < 3; ++j) {
@@ -286,19 +291,37 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
       }
       rhs.row(f) = b;
     });
-    N_prev = N;
-    const int sweeps = n_step.solve(rhs, N, o.solver_tolerance);
+  };
+  // 1. N-step: (2αS + r GᵀLG) N_out = rhs, warm-started from N_out for CG.
+  // The paper projects N onto the unit sphere after every N-step. That makes the splitting
+  // inconsistent (p and λ then refer to another N than the linear N-step produces): for
+  // α ≲ 1 or heavy noise the residual grows and the normals end up worse than the input
+  // (gnf fandisk 0.7: normal MSAE 1106e-3 at α = 0.5 against 818e-3 for the noisy input).
+  // Default: solve the relaxed problem and project once after the loop (docs/presets.md).
+  auto solve_n = [&](Rows& N_out, const Rows& fallback) {
+    const int sweeps = n_step.solve(rhs, N_out, o.solver_tolerance);
     if (sweeps >= 0) res.n_solver_iterations.push_back(sweeps);
-    // The paper projects N onto the unit sphere after every N-step. That makes the splitting
-    // inconsistent (p and λ then refer to another N than the linear N-step produces): for
-    // α ≲ 1 or heavy noise the residual grows and the normals end up worse than the input
-    // (gnf fandisk 0.7: normal MSAE 1106e-3 at α = 0.5 against 818e-3 for the noisy input).
-    // Default: solve the relaxed problem and project once after the loop (docs/presets.md).
-    if (o.project_each_iteration) normalize_rows(N, N_prev);
+    if (o.project_each_iteration) normalize_rows(N_out, fallback);
+  };
+  // The next N-step needs only p and λ, not v, so it can run beside this iteration's v-step:
+  // on two threads when the N-step is factored (CHOLMOD's solve is sequential; the v-step then
+  // runs on the other core, its own loops on one thread). Same arithmetic either way.
+#ifdef _OPENMP
+  const bool overlap = !n_step.iterative() && omp_get_max_threads() > 1;
+#else
+  const bool overlap = false;
+#endif
+  Rows N_next(nf, 3);
+
+  build_rhs();
+  N_prev = N;
+  solve_n(N, N_prev);
+  for (int k = 0; k < o.max_iterations; ++k) {
     const double change = std::sqrt(std::max(0.0, detail::deterministic_sums<1>(nf, [&](Eigen::Index f0, Eigen::Index f1,
                                                                                          std::array<double, 1>& s) {
       for (Eigen::Index f = f0; f < f1; ++f) s[0] += area(f) * (N.row(f) - N_prev.row(f)).squaredNorm();
     })[0]));
+    const bool last = k + 1 == o.max_iterations || change < o.tolerance;
 
     // 2.+4. One pass over the edges: p-step (eq. 22: vector soft threshold of ψ = ∇N − λ/r
     // by γ v² w / r), the multiplier (DESIGN.md step 4: λ += ν r (p − ∇N)), the residual
@@ -331,9 +354,33 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
         w(e) = irla_weight(p_norm(e), o);
       }
     })[0];
+
     // 3. v-step (eq. 23) with the weights of this iteration and the new p; warm-started
     // Jacobi-preconditioned CG (the matrix is strongly diagonally dominant for small ε).
-    const int cg_iterations = solve_v_step(Kv, Kv_diag, v_diag, v_rhs, v);
+    // Beside it, the N-step of the next iteration (unless this is the last).
+    if (!last) {
+      build_rhs();
+      if (n_step.iterative()) N_next = N;  // warm start
+    }
+    int cg_iterations = 0;
+    std::exception_ptr failed[2];
+#pragma omp parallel sections num_threads(2) if (overlap && !last)
+    {
+#pragma omp section
+      try {
+        if (!last) solve_n(N_next, N);
+      } catch (...) {
+        failed[0] = std::current_exception();
+      }
+#pragma omp section
+      try {
+        cg_iterations = solve_v_step(Kv, Kv_diag, v_diag, v_rhs, v);
+      } catch (...) {
+        failed[1] = std::current_exception();
+      }
+    }
+    for (const auto& e : failed)
+      if (e) std::rethrow_exception(e);
     if (cg_iterations < 0) throw SolverError("normal filtering: v-step conjugate gradient did not converge");
     res.v_solver_iterations.push_back(cg_iterations);
 
@@ -352,6 +399,9 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
       res.converged = true;
       break;
     }
+    if (last) break;
+    N_prev.swap(N);  // N_prev = N^k
+    N.swap(N_next);  // N = N^{k+1}
   }
   normalize_rows(N, N0r);
   res.normals = N;

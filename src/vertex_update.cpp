@@ -174,17 +174,16 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
         Ph = Ph * (h * h.transpose());
         ++fallbacks;
       }
-      P.block<3, 3>(3 * f, 0) = Ph;
+      // Stored as M P̂ (each row minus the face's mean row), which is what ω₁KᵀP gathers.
+      const Eigen::RowVector3d ph_mean = (Ph.row(0) + Ph.row(1) + Ph.row(2)) / 3.0;
+      P.block<3, 3>(3 * f, 0) = Ph.rowwise() - ph_mean;
     }
     // V-step (eq. 27): rhs = ω₁KᵀP + ω₃V⁰, row by row.
     detail::parallel_for(nv, [&](Eigen::Index i) {
       Eigen::RowVector3d b = rhs0.row(i);
-      // ω₁KᵀP: each corner of the vertex adds its row of P minus the mean of its face's rows.
-      for (int c = corner_start[static_cast<size_t>(i)]; c < corner_start[static_cast<size_t>(i) + 1]; ++c) {
-        const Eigen::Index f = corners[static_cast<size_t>(c)] / 3;
-        const int a = corners[static_cast<size_t>(c)] % 3;
-        b += o.omega1 * (P.row(3 * f + a) - (P.row(3 * f) + P.row(3 * f + 1) + P.row(3 * f + 2)) / 3.0);
-      }
+      // ω₁KᵀP: each corner of the vertex adds its (centred) row of P.
+      for (int c = corner_start[static_cast<size_t>(i)]; c < corner_start[static_cast<size_t>(i) + 1]; ++c)
+        b += o.omega1 * P.row(corners[static_cast<size_t>(c)]);
       rhs.row(i) = b;
     });
     X_prev = X;
