@@ -130,20 +130,56 @@ TEST(Solver, ResultsDoNotDependOnTheThreadCount) {
 #ifndef _OPENMP
   GTEST_SKIP() << "built without OpenMP";
 #else
-  // Large enough for the loops to run in parallel (more than 8192 rows).
-  const Mesh m = noisy_cube(30);
-  ASSERT_GT(m.F.rows(), 10000);
+  // Large enough for the per-face and per-edge loops to run in parallel (at least
+  // kParallelMin = 32768 rows), for both solver paths: the factored N-step runs beside the
+  // v-step on two threads (sequentially on one), CG splits its kernels over the threads.
+  const Mesh m = noisy_cube(53);
+  ASSERT_GE(m.F.rows(), 32768);
   const int threads = omp_get_max_threads();
-  DenoiseOptions o = preset_options("cad");
-  o.normals.max_iterations = 5;
-  o.vertices.max_iterations = 5;
-  omp_set_num_threads(1);
-  const DenoiseResult one = denoise(m.V, m.F, o);
-  omp_set_num_threads(std::max(2, threads));
-  const DenoiseResult many = denoise(m.V, m.F, o);
-  omp_set_num_threads(threads);
-  EXPECT_EQ(one.V, many.V);  // bit for bit
-  EXPECT_EQ(one.normals, many.normals);
-  EXPECT_EQ(one.v, many.v);
+  for (const LinearSolver solver : {LinearSolver::Auto, LinearSolver::CG}) {
+    SCOPED_TRACE(solver == LinearSolver::Auto ? "auto (factor)" : "cg");
+    DenoiseOptions o = preset_options("cad");
+    o.normals.max_iterations = 5;
+    o.vertices.max_iterations = 5;
+    o.normals.solver = o.vertices.solver = solver;
+    omp_set_num_threads(1);
+    const DenoiseResult one = denoise(m.V, m.F, o);
+    omp_set_num_threads(std::max(2, threads));
+    const DenoiseResult many = denoise(m.V, m.F, o);
+    omp_set_num_threads(threads);
+    EXPECT_EQ(one.V, many.V);  // bit for bit
+    EXPECT_EQ(one.normals, many.normals);
+    EXPECT_EQ(one.v, many.v);
+    EXPECT_EQ(one.normal_report.residual_history, many.normal_report.residual_history);
+  }
 #endif
+}
+
+// The N-step of iteration k+1 is solved beside the v-step of iteration k; it must not be
+// solved when iteration k is the last (max_iterations or converged), and stopping on the
+// tolerance must give the iterate of the stopping iteration, whatever the solver.
+TEST(Solver, OneNStepPerIterationAlsoWhenStoppingEarly) {
+  const Mesh m = noisy_cube(6, 0.05);
+  for (const LinearSolver solver : {LinearSolver::Cholesky, LinearSolver::CG}) {
+    SCOPED_TRACE(solver == LinearSolver::Cholesky ? "cholesky" : "cg");
+    NormalFilterOptions o = preset_options("cad").normals;
+    o.solver = solver;
+    o.max_iterations = 200;
+    o.tolerance = 1e-3;
+    const NormalFilterResult early = filter_normals(m.V, m.F, o);
+    ASSERT_TRUE(early.converged);
+    ASSERT_LT(early.iterations, 200);
+    ASSERT_EQ(early.change_history.size(), static_cast<size_t>(early.iterations));
+    EXPECT_LT(early.change_history.back(), 1e-3);
+    if (solver == LinearSolver::CG) EXPECT_EQ(early.n_solver_iterations.size(), static_cast<size_t>(early.iterations));
+    // The same number of iterations run to their end without the tolerance: same result.
+    o.tolerance = 0;
+    o.max_iterations = early.iterations;
+    const NormalFilterResult fixed = filter_normals(m.V, m.F, o);
+    EXPECT_FALSE(fixed.converged);
+    EXPECT_EQ(fixed.iterations, early.iterations);
+    EXPECT_EQ(fixed.normals, early.normals);
+    EXPECT_EQ(fixed.v, early.v);
+    if (solver == LinearSolver::CG) EXPECT_EQ(fixed.n_solver_iterations, early.n_solver_iterations);
+  }
 }
