@@ -11,6 +11,7 @@
 #include "msmesh/errors.h"
 #include "msmesh/operators.h"
 #include "pcg.h"
+#include "tree_solve.h"
 
 namespace msmesh::detail {
 
@@ -20,15 +21,28 @@ class FixedCholesky {
     chol_.compute(A);
     if (chol_.info() != Eigen::Success)
       throw SolverError(what + ": Cholesky factorisation failed (matrix not positive definite)");
+    tree_ = TreeSolve(chol_.factor());
   }
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& B, const std::string& what) const {
-    Eigen::MatrixXd X = chol_.solve(B);
-    if (chol_.info() != Eigen::Success || !X.allFinite()) throw SolverError(what + ": solve failed");
-    return X;
+  /// Share of the factor's entries whose solves run on two threads (tree_solve.h).
+  double parallel_share() const { return tree_.valid() ? tree_.parallel_share() : 0.0; }
+  /// Solves A X = B (three columns, row-major); X may be B.
+  void solve(const RowMatrixX3& B, RowMatrixX3& X, const std::string& what) const {
+    if (tree_.valid()) {
+      tree_.solve(B, X);
+    } else {
+      X = chol_.solve(Eigen::MatrixXd(B));
+      if (chol_.info() != Eigen::Success) throw SolverError(what + ": solve failed");
+    }
+    if (!X.allFinite()) throw SolverError(what + ": solve failed (non-finite result)");
   }
 
  private:
-  Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower> chol_;
+  // Eigen's wrapper, with access to CHOLMOD's factor for the triangular solves.
+  struct Factor : Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower> {
+    const cholmod_factor* factor() const { return m_cholmodFactor; }
+  };
+  Factor chol_;
+  TreeSolve tree_{nullptr};
 };
 
 /// A system A X = B that stays the same over the iterations (N-step, vertex update), solved
@@ -45,7 +59,7 @@ class ConstantSystem {
   /// system was factored. Throws SolverError naming the system.
   int solve(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance) const {
     if (pcg_) return pcg_->solve(B, X, relative_tolerance, 100000, what_).iterations;
-    X = chol_->solve(Eigen::MatrixXd(B), what_);
+    chol_->solve(B, X, what_);
     return -1;
   }
   bool iterative() const { return pcg_ != nullptr; }

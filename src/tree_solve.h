@@ -1,0 +1,50 @@
+// Internal: the triangular solves with a CHOLMOD simplicial LLᵀ factor, for three right-hand
+// sides stored row by row, split over two threads along the elimination tree.
+//
+// Columns of L in two disjoint subtrees of the elimination tree never meet until their
+// common ancestors, so the forward solve L y = b runs two sets of subtrees at once (their
+// contributions to the ancestor rows go to a buffer per set) and then the remaining top of
+// the tree; the backward solve Lᵀ x = y runs the top first, then the two sets at once.
+// The split is a property of the factor, not of the thread count: one thread runs the two
+// sets one after the other and gets the same bits.
+#pragma once
+#include <Eigen/Core>
+#include <vector>
+
+#include "pcg.h"
+
+struct cholmod_factor_struct;
+
+namespace msmesh::detail {
+
+class TreeSolve {
+ public:
+  /// Reads a simplicial LLᵀ factor (int indices, real), which must outlive this object.
+  /// valid() is false for any other kind of factor.
+  explicit TreeSolve(const cholmod_factor_struct* L);
+  bool valid() const { return valid_; }
+  /// Solves A X = B for the A that was factored; B and X are #rows by 3, row-major (X may be B).
+  void solve(const RowMatrixX3& B, RowMatrixX3& X) const;
+  /// Share of L's entries in the two parallel sets (0 when the solve is serial).
+  double parallel_share() const { return parallel_share_; }
+
+ private:
+  void forward(double* y) const;
+  void backward(double* y) const;
+
+  bool valid_ = false;
+  int n_ = 0;
+  const int *Lp_ = nullptr, *Li_ = nullptr, *Lnz_ = nullptr, *perm_ = nullptr;
+  const double* Lx_ = nullptr;
+  struct Range {
+    int begin, end;  // columns [begin, end): one subtree, postordered
+  };
+  std::vector<Range> sets_[2];  // ascending
+  std::vector<int> top_;        // columns outside the sets, ascending
+  std::vector<int> top_slot_;   // column → index in top_, or −1
+  mutable std::vector<double> buffer_[2];
+  mutable std::vector<double> work_;
+  double parallel_share_ = 0;
+};
+
+}  // namespace msmesh::detail
