@@ -273,10 +273,11 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
   using Rows = detail::RowMatrixX3;
   const Rows N0r = detail::to_rows(N0);
   Rows N = N0r, N_prev(nf, 3), rhs(nf, 3);
-  Rows p = Rows::Zero(ne, 3), lambda = Rows::Zero(ne, 3);
+  // q = r p + λ per edge, what the N-step right-hand side needs of p and λ (p itself is
+  // used only in the pass over the edges that makes it).
+  Rows q = Rows::Zero(ne, 3), lambda = Rows::Zero(ne, 3);
   Eigen::VectorXd v = Eigen::VectorXd::Constant(ne, o.v_initial);
   Eigen::VectorXd w = Eigen::VectorXd::Ones(ne);  // w⁰ = 1
-  Eigen::VectorXd p_norm = Eigen::VectorXd::Zero(ne);
   const Eigen::VectorXd& len = ops.edge_lengths;
   const Eigen::VectorXd& area = ops.face_areas;
 
@@ -287,7 +288,7 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
       Eigen::RowVector3d b = fid_weight(f) * N0r.row(f);
       for (int j = 0; j < 3; ++j) {
         const int e = topo.face_edges(f, j);
-        if (gt_weight(f, j) != 0) b += gt_weight(f, j) * (o.penalty * p.row(e) + lambda.row(e));
+        if (gt_weight(f, j) != 0) b += gt_weight(f, j) * q.row(e);
       }
       rhs.row(f) = b;
     });
@@ -330,28 +331,24 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
     const double resid2 = detail::deterministic_sums<1>(ne, [&](Eigen::Index e0, Eigen::Index e1,
                                                                 std::array<double, 1>& s) {
       for (Eigen::Index e = e0; e < e1; ++e) {
-        Eigen::RowVector3d g = Eigen::RowVector3d::Zero();
+        Eigen::RowVector3d g = Eigen::RowVector3d::Zero(), pe = Eigen::RowVector3d::Zero();
+        double pe_norm = 0;
         if (topo.edge_is_interior[e]) {
           g = N.row(topo.edge_faces(e, 0)) - N.row(topo.edge_faces(e, 1));
           const Eigen::RowVector3d psi = g - lambda.row(e) / o.penalty;
           const double psi_norm = psi.norm();
           const double thr = o.gamma * v(e) * v(e) * w(e) / o.penalty;
           if (psi_norm > thr) {
-            p.row(e) = (1.0 - thr / psi_norm) * psi;
-            p_norm(e) = psi_norm - thr;
-          } else {
-            p.row(e).setZero();
-            p_norm(e) = 0;
+            pe = (1.0 - thr / psi_norm) * psi;
+            pe_norm = psi_norm - thr;
           }
-        } else {
-          p.row(e).setZero();
-          p_norm(e) = 0;
         }
-        const Eigen::RowVector3d r = p.row(e) - g;
+        const Eigen::RowVector3d r = pe - g;
         lambda.row(e) += o.relaxation * o.penalty * r;
+        q.row(e) = o.penalty * pe + lambda.row(e);
         s[0] += len(e) * r.squaredNorm();
-        v_diag(e) = Kv_diag(e) + len(e) * (2 * o.gamma * w(e) * p_norm(e) + edge_beta(e) * o.beta / (2 * o.epsilon));
-        w(e) = irla_weight(p_norm(e), o);
+        v_diag(e) = Kv_diag(e) + len(e) * (2 * o.gamma * w(e) * pe_norm + edge_beta(e) * o.beta / (2 * o.epsilon));
+        w(e) = irla_weight(pe_norm, o);
       }
     })[0];
 
