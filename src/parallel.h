@@ -32,10 +32,11 @@ std::array<double, K> deterministic_sums(Eigen::Index n, Body&& body) {
   return total;
 }
 
-/// Runs body(i) for i in [0, n), in parallel when n is large enough.
+/// Runs body(i) for i in [0, n), in parallel when n is large enough; `row_weight` counts a
+/// row as that many simple rows (a vertex-update matrix row of ~70 entries is worth ~17).
 template <class Body>
-void parallel_for(Eigen::Index n, Body&& body) {
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+void parallel_for(Eigen::Index n, Body&& body, Eigen::Index row_weight = 1) {
+#pragma omp parallel for schedule(static) if (n * row_weight >= kParallelMin)
   for (Eigen::Index i = 0; i < n; ++i) body(i);
 }
 

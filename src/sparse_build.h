@@ -34,6 +34,7 @@ Eigen::SparseMatrix<double> symmetric_from_rows(Eigen::Index n, Capacity&& capac
   std::vector<int> col(static_cast<size_t>(cap.back()));
   std::vector<double> val(static_cast<size_t>(cap.back()));
   std::vector<int> count(static_cast<size_t>(n));
+  const Eigen::Index row_weight = std::max<Eigen::Index>(1, cap.back() / std::max<Eigen::Index>(1, 4 * n));
   parallel_for(n, [&](Eigen::Index i) {
     const size_t b = static_cast<size_t>(cap[static_cast<size_t>(i)]);
     size_t m = static_cast<size_t>(row(i, col.data() + b, val.data() + b));
@@ -74,7 +75,7 @@ Eigen::SparseMatrix<double> symmetric_from_rows(Eigen::Index n, Capacity&& capac
       m = u;
     }
     count[static_cast<size_t>(i)] = static_cast<int>(m);
-  });
+  }, row_weight);
   Eigen::SparseMatrix<double> A(n, n);
   Eigen::Index nnz = 0;
   for (Eigen::Index i = 0; i < n; ++i) nnz += count[static_cast<size_t>(i)];

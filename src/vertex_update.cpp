@@ -185,7 +185,7 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
       for (int c = corner_start[static_cast<size_t>(i)]; c < corner_start[static_cast<size_t>(i) + 1]; ++c)
         b += o.omega1 * P.row(corners[static_cast<size_t>(c)]);
       rhs.row(i) = b;
-    });
+    }, 2);  // about six corners per vertex
     X_prev = X;
     if (v_step.iterative() && k >= 1) {
       // Warm start on the secant X_k + (X_k − X_{k−1}): the vertices move smoothly from one
