@@ -3,46 +3,39 @@
 // CHOLMOD's simplicial LLᵀ (SuiteSparse) measured 2.3× faster than Eigen's SimplicialLLT for
 // the 30 three-column solves on the 61K-face Cone, with the same factorisation time; the
 // supernodal variant was slower on these very sparse mesh matrices (docs/performance.md).
+// CHOLMOD itself stays inside cholesky.cpp.
 #pragma once
-#include <Eigen/CholmodSupport>
 #include <memory>
 #include <string>
 
 #include "msmesh/errors.h"
 #include "msmesh/operators.h"
 #include "pcg.h"
-#include "tree_solve.h"
 
 namespace msmesh::detail {
 
+/// A sparse Cholesky factorisation A = L Lᵀ (CHOLMOD simplicial, fill-reducing ordering by
+/// CHOLMOD's default: AMD), computed once; solves three right-hand sides at a time. The
+/// numeric factorisation and the solves run two sets of subtrees of the elimination tree at
+/// once (tree_solve.h); the factor is the same bits as a serial factorisation.
 class FixedCholesky {
  public:
-  FixedCholesky(const SparseMatrix& A, const std::string& what) {
-    chol_.compute(A);
-    if (chol_.info() != Eigen::Success)
-      throw SolverError(what + ": Cholesky factorisation failed (matrix not positive definite)");
-    tree_ = TreeSolve(chol_.factor());
-  }
-  /// Share of the factor's entries whose solves run on two threads (tree_solve.h).
-  double parallel_share() const { return tree_.valid() ? tree_.parallel_share() : 0.0; }
+  /// Factors the symmetric positive definite A (lower triangle used); throws SolverError
+  /// naming `what` when it is not positive definite.
+  FixedCholesky(const SparseMatrix& A, const std::string& what);
+  ~FixedCholesky();
+  FixedCholesky(const FixedCholesky&) = delete;
+  FixedCholesky& operator=(const FixedCholesky&) = delete;
+  /// Share of the factor's entries whose solves run on two threads.
+  double parallel_share() const;
+  /// Share of the factorisation work done on two threads.
+  double parallel_factor_share() const;
   /// Solves A X = B (three columns, row-major); X may be B.
-  void solve(const RowMatrixX3& B, RowMatrixX3& X, const std::string& what) const {
-    if (tree_.valid()) {
-      tree_.solve(B, X);
-    } else {
-      X = chol_.solve(Eigen::MatrixXd(B));
-      if (chol_.info() != Eigen::Success) throw SolverError(what + ": solve failed");
-    }
-    if (!X.allFinite()) throw SolverError(what + ": solve failed (non-finite result)");
-  }
+  void solve(const RowMatrixX3& B, RowMatrixX3& X, const std::string& what) const;
 
  private:
-  // Eigen's wrapper, with access to CHOLMOD's factor for the triangular solves.
-  struct Factor : Eigen::CholmodSimplicialLLT<SparseMatrix, Eigen::Lower> {
-    const cholmod_factor* factor() const { return m_cholmodFactor; }
-  };
-  Factor chol_;
-  TreeSolve tree_{nullptr};
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
 };
 
 /// A system A X = B that stays the same over the iterations (N-step, vertex update), solved

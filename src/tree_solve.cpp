@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cholmod.h>
-#include <numeric>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -18,8 +17,9 @@ namespace {
 // (1.8M) 8.8 → 4.5 ms, its N-step (0.9M) 4.5 → 2.7 ms.
 constexpr double kMinParallelEntries = 600000;
 
-// Two threads unless the user asked for one (OMP_NUM_THREADS=1): the sets then run in turn.
-int set_threads() {
+}  // namespace
+
+int tree_threads() {
 #ifdef _OPENMP
   return std::min(2, omp_get_max_threads());
 #else
@@ -27,36 +27,18 @@ int set_threads() {
 #endif
 }
 
-}  // namespace
 
-TreeSolve::TreeSolve(const cholmod_factor_struct* L) {
-  if (!L || L->is_super || !L->is_ll || L->xtype != CHOLMOD_REAL || L->itype != CHOLMOD_INT || L->minor < L->n || !L->Perm || !L->nz)
-    return;
-  valid_ = true;
-  n_ = static_cast<int>(L->n);
-  Lp_ = static_cast<const int*>(L->p);
-  Li_ = static_cast<const int*>(L->i);
-  Lnz_ = static_cast<const int*>(L->nz);
-  Lx_ = static_cast<const double*>(L->x);
-  perm_ = static_cast<const int*>(L->Perm);
-  work_.resize(3 * static_cast<size_t>(n_));
-  const size_t n = static_cast<size_t>(n_);
-
-  // Elimination tree from L (the first off-diagonal row of column j is its parent; rows are
-  // sorted), subtree entry counts and sizes. CHOLMOD postorders the tree, so each subtree is
-  // the column range [j − size + 1, j]; if that does not hold, everything stays serial.
-  std::vector<int> parent(n, -1), size(n, 1);
-  std::vector<double> cost(n, 0);
+TreeSplit split_elimination_tree(const std::vector<int>& parent, const std::vector<double>& cost_in, double min_total) {
+  const size_t n = parent.size();
+  TreeSplit split;
+  // Subtree costs and sizes; each subtree must be the column range [j − size + 1, j].
+  std::vector<int> size(n, 1);
+  std::vector<double> cost(cost_in);
   double total = 0;
   bool postordered = true;
   for (size_t j = 0; j < n; ++j) {
-    cost[j] += Lnz_[j];
-    total += Lnz_[j];
-    if (Lnz_[j] > 1) {
-      const int p = Li_[Lp_[j] + 1];
-      if (p <= static_cast<int>(j)) postordered = false;
-      parent[j] = p;
-    }
+    total += cost_in[j];
+    if (parent[j] >= 0 && parent[j] <= static_cast<int>(j)) postordered = false;
   }
   for (size_t j = 0; j < n && postordered; ++j)
     if (parent[j] >= 0) {
@@ -65,13 +47,11 @@ TreeSolve::TreeSolve(const cholmod_factor_struct* L) {
     }
   for (size_t j = 0; j < n && postordered; ++j) {
     const int first = static_cast<int>(j) - size[j] + 1;
-    if (first < 0 || (parent[j] >= 0 && static_cast<int>(j) + 1 > parent[j])) postordered = false;
+    if (first < 0) postordered = false;
     if (parent[j] >= 0 && first < parent[j] - size[static_cast<size_t>(parent[j])] + 1) postordered = false;
   }
-
   std::vector<char> in_set(n, 0);
-  if (postordered && total >= kMinParallelEntries) {
-    // Children lists.
+  if (postordered && total >= min_total) {
     std::vector<int> child_start(n + 1, 0), children(n);
     for (size_t j = 0; j < n; ++j)
       if (parent[j] >= 0) ++child_start[static_cast<size_t>(parent[j]) + 1];
@@ -86,12 +66,14 @@ TreeSolve::TreeSolve(const cholmod_factor_struct* L) {
     std::vector<int> candidates;
     for (size_t j = 0; j < n; ++j)
       if (parent[j] < 0) candidates.push_back(static_cast<int>(j));
-    double top_cost = 0;
+    const auto heavier = [&](int a, int b) {
+      const double ca = cost[static_cast<size_t>(a)], cb = cost[static_cast<size_t>(b)];
+      return ca > cb || (ca == cb && a < b);
+    };
+    double top_cost = 0, best_time = total;
     std::vector<int> best[2];
-    double best_time = total;  // serial
     for (int round = 0; round < 4096 && !candidates.empty(); ++round) {
-      std::sort(candidates.begin(), candidates.end(),
-                [&](int a, int b) { return cost[static_cast<size_t>(a)] > cost[static_cast<size_t>(b)] || (cost[static_cast<size_t>(a)] == cost[static_cast<size_t>(b)] && a < b); });
+      std::sort(candidates.begin(), candidates.end(), heavier);
       double load[2] = {0, 0};
       std::vector<int> sets[2];
       for (int r : candidates) {
@@ -108,28 +90,54 @@ TreeSolve::TreeSolve(const cholmod_factor_struct* L) {
       if (top_cost > 0.3 * total || std::max(load[0], load[1]) <= 0.51 * (load[0] + load[1])) break;
       const int heavy = candidates.front();
       candidates.erase(candidates.begin());
-      top_cost += Lnz_[heavy];
+      top_cost += cost_in[static_cast<size_t>(heavy)];
       for (int c = child_start[static_cast<size_t>(heavy)]; c < child_start[static_cast<size_t>(heavy) + 1]; ++c)
         candidates.push_back(children[static_cast<size_t>(c)]);
     }
-    if (best_time < 0.8 * total) {
+    if (best_time < 0.8 * total)
       for (int s = 0; s < 2; ++s) {
         for (int r : best[s]) {
-          const Range range{r - size[static_cast<size_t>(r)] + 1, r + 1};
-          sets_[s].push_back(range);
+          const TreeSplit::Range range{r - size[static_cast<size_t>(r)] + 1, r + 1};
+          split.sets[s].push_back(range);
           std::fill(in_set.begin() + range.begin, in_set.begin() + range.end, 1);
-          parallel_share_ += cost[static_cast<size_t>(r)] / total;
+          split.parallel_share += cost[static_cast<size_t>(r)] / total;
         }
-        std::sort(sets_[s].begin(), sets_[s].end(), [](const Range& a, const Range& b) { return a.begin < b.begin; });
+        std::sort(split.sets[s].begin(), split.sets[s].end(),
+                  [](const TreeSplit::Range& a, const TreeSplit::Range& b) { return a.begin < b.begin; });
       }
-    }
   }
-  top_slot_.assign(n, -1);
   for (size_t j = 0; j < n; ++j)
-    if (!in_set[j]) {
-      top_slot_[j] = static_cast<int>(top_.size());
-      top_.push_back(static_cast<int>(j));
-    }
+    if (!in_set[j]) split.top.push_back(static_cast<int>(j));
+  return split;
+}
+
+TreeSolve::TreeSolve(const cholmod_factor_struct* L) {
+  if (!L || L->is_super || !L->is_ll || L->xtype != CHOLMOD_REAL || L->itype != CHOLMOD_INT || L->minor < L->n ||
+      !L->Perm || !L->nz)
+    return;
+  valid_ = true;
+  n_ = static_cast<int>(L->n);
+  Lp_ = static_cast<const int*>(L->p);
+  Li_ = static_cast<const int*>(L->i);
+  Lnz_ = static_cast<const int*>(L->nz);
+  Lx_ = static_cast<const double*>(L->x);
+  perm_ = static_cast<const int*>(L->Perm);
+  work_.resize(3 * static_cast<size_t>(n_));
+  const size_t n = static_cast<size_t>(n_);
+  // Elimination tree from L: the first off-diagonal row of column j (rows are sorted).
+  std::vector<int> parent(n, -1);
+  std::vector<double> cost(n);
+  for (size_t j = 0; j < n; ++j) {
+    cost[j] = Lnz_[j];
+    if (Lnz_[j] > 1) parent[j] = Li_[Lp_[j] + 1];
+  }
+  TreeSplit split = split_elimination_tree(parent, cost, kMinParallelEntries);
+  sets_[0] = std::move(split.sets[0]);
+  sets_[1] = std::move(split.sets[1]);
+  top_ = std::move(split.top);
+  parallel_share_ = split.parallel_share;
+  top_slot_.assign(n, -1);
+  for (size_t t = 0; t < top_.size(); ++t) top_slot_[static_cast<size_t>(top_[t])] = static_cast<int>(t);
   for (auto& b : buffer_) b.assign(3 * top_.size(), 0.0);
 }
 
@@ -137,7 +145,7 @@ void TreeSolve::forward(double* y) const {
   const bool split = !sets_[0].empty() || !sets_[1].empty();
   if (split) {
     // The two sets at once; updates of top rows go to the set's buffer.
-#pragma omp parallel for num_threads(set_threads()) schedule(static, 1)
+#pragma omp parallel for num_threads(tree_threads()) schedule(static, 1)
     for (int s = 0; s < 2; ++s) {
       double* buf = buffer_[s].data();
       std::fill(buffer_[s].begin(), buffer_[s].end(), 0.0);
@@ -208,7 +216,7 @@ void TreeSolve::backward(double* x) const {
   };
   for (auto it = top_.rbegin(); it != top_.rend(); ++it) column(*it);
   if (sets_[0].empty() && sets_[1].empty()) return;
-#pragma omp parallel for num_threads(set_threads()) schedule(static, 1)
+#pragma omp parallel for num_threads(tree_threads()) schedule(static, 1)
   for (int s = 0; s < 2; ++s)
     for (auto r = sets_[s].rbegin(); r != sets_[s].rend(); ++r)
       for (int j = r->end - 1; j >= r->begin; --j) column(j);

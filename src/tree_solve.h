@@ -17,6 +17,24 @@ struct cholmod_factor_struct;
 
 namespace msmesh::detail {
 
+/// Two sets of disjoint subtrees of an elimination tree, to be worked on at once, and the
+/// remaining top of the tree (the ancestors), to be worked on after (forward) or before
+/// (backward). The tree must be postordered (each subtree a range of columns); `cost` is
+/// the work of each column. Below `min_total` total work, or when the split would not save
+/// a fifth, everything is top (serial).
+struct TreeSplit {
+  struct Range {
+    int begin, end;  // columns [begin, end): one subtree
+  };
+  std::vector<Range> sets[2];  // ascending
+  std::vector<int> top;        // columns outside the sets, ascending
+  double parallel_share = 0;   // share of the cost in the two sets
+};
+TreeSplit split_elimination_tree(const std::vector<int>& parent, const std::vector<double>& cost, double min_total);
+
+/// Threads for the two sets: two, unless the user asked for one (OMP_NUM_THREADS=1).
+int tree_threads();
+
 class TreeSolve {
  public:
   /// Reads a simplicial LLᵀ factor (int indices, real), which must outlive this object.
@@ -36,9 +54,7 @@ class TreeSolve {
   int n_ = 0;
   const int *Lp_ = nullptr, *Li_ = nullptr, *Lnz_ = nullptr, *perm_ = nullptr;
   const double* Lx_ = nullptr;
-  struct Range {
-    int begin, end;  // columns [begin, end): one subtree, postordered
-  };
+  using Range = TreeSplit::Range;
   std::vector<Range> sets_[2];  // ascending
   std::vector<int> top_;        // columns outside the sets, ascending
   std::vector<int> top_slot_;   // column → index in top_, or −1

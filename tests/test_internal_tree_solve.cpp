@@ -1,11 +1,14 @@
-// The triangular solves split over the elimination tree (src/tree_solve.h) against CHOLMOD's
-// own solve, on systems large enough to be split and too small to be.
+// The factorisation and triangular solves split over the elimination tree (src/cholesky.cpp,
+// src/tree_solve.h) against CHOLMOD's own factorisation and solve, on systems large enough
+// to be split and too small to be.
 #include <gtest/gtest.h>
 
+#include <Eigen/CholmodSupport>
 #include <vector>
 
 #include "sparse_build.h"
 #include "sparse_solve.h"
+#include "tree_solve.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -71,8 +74,9 @@ TEST(TreeSolve, LargeSystemIsSplitAndMatchesCholmod) {
 #ifdef _OPENMP
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
+  const FixedCholesky chol1(A, "test");  // factored and solved on one thread
   RowMatrixX3 one;
-  chol.solve(B, one, "test");
+  chol1.solve(B, one, "test");
   omp_set_num_threads(std::max(2, threads));
   RowMatrixX3 two;
   chol.solve(B, two, "test");
@@ -90,6 +94,7 @@ TEST(TreeSolve, SplitCoversMostOfTheFactorOnMeshLikeGraphs) {
   const SparseMatrix A = grid_matrix(200, 0.05);
   const FixedCholesky chol(A, "test");
   EXPECT_GT(chol.parallel_share(), 0.7);  // at most 30 % of L in the serial top of the tree
+  EXPECT_GT(chol.parallel_factor_share(), 0.6);
   RowMatrixX3 X;
   const RowMatrixX3 B = rhs(A.rows());
   chol.solve(B, X, "test");
@@ -100,6 +105,7 @@ TEST(TreeSolve, SmallSystemStaysSerialAndMatches) {
   const SparseMatrix A = grid_matrix(20, 0.5);  // 400 rows
   FixedCholesky chol(A, "test");
   EXPECT_EQ(chol.parallel_share(), 0.0);
+  EXPECT_EQ(chol.parallel_factor_share(), 0.0);
   const RowMatrixX3 B = rhs(A.rows());
   RowMatrixX3 X;
   chol.solve(B, X, "test");
@@ -116,5 +122,17 @@ TEST(TreeSolve, NonFiniteRightHandSideIsAnError) {
     FAIL() << "no error";
   } catch (const SolverError& e) {
     EXPECT_NE(std::string(e.what()).find("the test system"), std::string::npos) << e.what();
+  }
+}
+
+TEST(TreeSolve, NotPositiveDefiniteIsAnErrorNamingTheSystem) {
+  SparseMatrix A = grid_matrix(60, 0.5);  // large enough for the split factorisation
+  A.coeffRef(1234, 1234) = -5.0;
+  try {
+    FixedCholesky chol(A, "the test system");
+    FAIL() << "no error";
+  } catch (const SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("the test system"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not positive definite"), std::string::npos) << e.what();
   }
 }
