@@ -360,24 +360,32 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
       if (n_step.iterative()) N_next = N;  // warm start
     }
     int cg_iterations = 0;
-    std::exception_ptr failed[2];
-#pragma omp parallel sections num_threads(2) if (overlap && !last)
-    {
+    const auto v_step = [&] { cg_iterations = solve_v_step(Kv, Kv_diag, v_diag, v_rhs, v); };
+    if (overlap && !last) {
+      // Not a parallel region with an if clause: the loops inside an inactive region ran on
+      // one thread (the 100K-face cube's normal filter took 1.14 s instead of 0.73 s).
+      std::exception_ptr failed[2];
+#pragma omp parallel sections num_threads(2)
+      {
 #pragma omp section
-      try {
-        if (!last) solve_n(N_next, N);
-      } catch (...) {
-        failed[0] = std::current_exception();
-      }
+        try {
+          solve_n(N_next, N);
+        } catch (...) {
+          failed[0] = std::current_exception();
+        }
 #pragma omp section
-      try {
-        cg_iterations = solve_v_step(Kv, Kv_diag, v_diag, v_rhs, v);
-      } catch (...) {
-        failed[1] = std::current_exception();
+        try {
+          v_step();
+        } catch (...) {
+          failed[1] = std::current_exception();
+        }
       }
+      for (const auto& e : failed)
+        if (e) std::rethrow_exception(e);
+    } else {
+      if (!last) solve_n(N_next, N);
+      v_step();
     }
-    for (const auto& e : failed)
-      if (e) std::rethrow_exception(e);
     if (cg_iterations < 0) throw SolverError("normal filtering: v-step conjugate gradient did not converge");
     res.v_solver_iterations.push_back(cg_iterations);
 
