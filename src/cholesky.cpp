@@ -87,27 +87,45 @@ FixedCholesky::FixedCholesky(const SparseMatrix& A, const std::string& what) : i
   L->is_ll = 1;
   const int grow2 = c.grow2;
   c.grow2 = 0;  // space for exactly the symbolic pattern (as cholmod_factorize does)
-  if (split.sets[0].empty() && split.sets[1].empty()) {
-    cholmod_rowfac(S, nullptr, beta, 0, n, L, &c);
-  } else {
+  const auto rows = [&](size_t k0, size_t k1) {
+    if (!cholmod_rowfac(S, nullptr, beta, k0, k1, L, &c)) throw failed("CHOLMOD row factorisation (out of memory?)");
+  };
+  bool split_rows = !split.sets[0].empty() || !split.sets[1].empty();
+  if (split_rows) {
     // Rows 0..−1: turns the symbolic factor into a numeric one with room for every column.
-    cholmod_rowfac(S, nullptr, beta, 0, 0, L, &c);
+    rows(0, 0);
+    if (L->xtype == CHOLMOD_PATTERN) throw failed("out of memory");
+    // The rows of the sets run concurrently only if no column will need to grow (which would
+    // move L's arrays): each must have room for its symbolic count, as CHOLMOD allocates it.
+    const int* Lp = static_cast<const int*>(L->p);
+    const int* Lnext = static_cast<const int*>(L->next);
+    for (size_t j = 0; j < n && split_rows; ++j)
+      if (Lp[Lnext[j]] - Lp[j] < std::min<int>(std::max(col_count[j], 1), static_cast<int>(n - j))) split_rows = false;
+  }
+  if (!split_rows) {
+    impl_->factor_share = 0;
+    rows(0, n);
+  } else {
     // Row k of L needs only rows of k's descendants and writes only into their columns, so
-    // the rows of the two sets (disjoint subtrees) are computed at once, each set with its
-    // own workspace, and then the top rows. Same operations as a serial factorisation.
+    // the rows of the two sets (disjoint subtrees) are computed at once, then the top rows.
+    // Each set has its own workspace and its own copy of L's header (the arrays are shared;
+    // L->minor, written when a pivot fails, is then not written by two threads).
     Common set_common[2];
+    cholmod_factor part[2] = {*L, *L};
     bool ok[2] = {true, true};
 #pragma omp parallel for num_threads(tree_threads()) schedule(static, 1)
     for (int s = 0; s < 2; ++s)
       for (const TreeSplit::Range& r : split.sets[s])
-        if (ok[s] && !cholmod_rowfac(S, nullptr, beta, static_cast<size_t>(r.begin), static_cast<size_t>(r.end), L,
+        if (ok[s] && !cholmod_rowfac(S, nullptr, beta, static_cast<size_t>(r.begin), static_cast<size_t>(r.end), &part[s],
                                      &set_common[s].c))
           ok[s] = false;
-    if (!ok[0] || !ok[1]) throw failed("out of memory");
+    if (!ok[0] || !ok[1] || part[0].i != L->i || part[1].i != L->i || part[0].x != L->x || part[1].x != L->x)
+      throw failed("CHOLMOD row factorisation (out of memory?)");
+    L->minor = std::min({L->minor, part[0].minor, part[1].minor});
     for (size_t t = 0; t < split.top.size();) {  // runs of consecutive top rows
       size_t e = t + 1;
       while (e < split.top.size() && split.top[e] == split.top[e - 1] + 1) ++e;
-      cholmod_rowfac(S, nullptr, beta, static_cast<size_t>(split.top[t]), static_cast<size_t>(split.top[e - 1]) + 1, L, &c);
+      rows(static_cast<size_t>(split.top[t]), static_cast<size_t>(split.top[e - 1]) + 1);
       t = e;
     }
   }

@@ -71,7 +71,18 @@ Eigen::SparseMatrix<double> symmetric_from_rows(Eigen::Index n, Capacity&& capac
         }
       }
       for (size_t a = 0; a < u; ++a) slot[static_cast<size_t>(col[b + a])] = -1;
-      insertion_sort(col.data() + b, val.data() + b, u);
+      if (u <= 32) {
+        insertion_sort(col.data() + b, val.data() + b, u);
+      } else {  // a high-valence vertex: O(u log u) (the columns are distinct, so any sort gives the same)
+        thread_local std::vector<std::pair<int, double>> pairs;
+        pairs.resize(u);
+        for (size_t a = 0; a < u; ++a) pairs[a] = {col[b + a], val[b + a]};
+        std::sort(pairs.begin(), pairs.end());
+        for (size_t a = 0; a < u; ++a) {
+          col[b + a] = pairs[a].first;
+          val[b + a] = pairs[a].second;
+        }
+      }
       m = u;
     }
     count[static_cast<size_t>(i)] = static_cast<int>(m);

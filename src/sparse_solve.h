@@ -30,7 +30,8 @@ class FixedCholesky {
   double parallel_share() const;
   /// Share of the factorisation work done on two threads.
   double parallel_factor_share() const;
-  /// Solves A X = B (three columns, row-major); X may be B.
+  /// Solves A X = B (three columns, row-major); X may be B. Not for two solves at once on
+  /// the same object (shared work space).
   void solve(const RowMatrixX3& B, RowMatrixX3& X, const std::string& what) const;
 
  private:

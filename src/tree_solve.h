@@ -42,6 +42,7 @@ class TreeSolve {
   explicit TreeSolve(const cholmod_factor_struct* L);
   bool valid() const { return valid_; }
   /// Solves A X = B for the A that was factored; B and X are #rows by 3, row-major (X may be B).
+  /// Uses work space of this object: not for two solves at once on the same object.
   void solve(const RowMatrixX3& B, RowMatrixX3& X) const;
   /// Share of L's entries in the two parallel sets (0 when the solve is serial).
   double parallel_share() const { return parallel_share_; }
