@@ -73,8 +73,9 @@ FixedCholesky::FixedCholesky(const SparseMatrix& A, const std::string& what) : i
     ~FreeS() { cholmod_free_sparse(&s, &c); }
   } free_s{S, c};
 
-  // The elimination tree of S, postordered by the analysis; the work of row k is about the
-  // square of column k's count.
+  // The elimination tree of S, postordered by the analysis. The split weighs column k by its
+  // count squared (the flops it takes part in); the row-by-row factorisation charges part of
+  // that to the top rows, so the sets' real share is lower (docs/performance.md).
   std::vector<int> parent(n);
   if (!cholmod_etree(S, parent.data(), &c)) throw failed("elimination tree");
   std::vector<double> work(n);

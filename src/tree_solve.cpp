@@ -142,45 +142,9 @@ TreeSolve::TreeSolve(const cholmod_factor_struct* L) {
 }
 
 void TreeSolve::forward(double* y) const {
-  const bool split = !sets_[0].empty() || !sets_[1].empty();
-  if (split) {
-    // The two sets at once; updates of top rows go to the set's buffer.
-#pragma omp parallel for num_threads(tree_threads()) schedule(static, 1)
-    for (int s = 0; s < 2; ++s) {
-      double* buf = buffer_[s].data();
-      std::fill(buffer_[s].begin(), buffer_[s].end(), 0.0);
-      for (const Range& r : sets_[s])
-        for (int j = r.begin; j < r.end; ++j) {
-          const int p0 = Lp_[j], p1 = p0 + Lnz_[j];
-          const double d = Lx_[p0];
-          double* yj = y + 3 * static_cast<size_t>(j);
-          const double x0 = yj[0] / d, x1 = yj[1] / d, x2 = yj[2] / d;
-          yj[0] = x0;
-          yj[1] = x1;
-          yj[2] = x2;
-          int q = p0 + 1;
-          for (; q < p1 && Li_[q] < r.end; ++q) {
-            double* yi = y + 3 * static_cast<size_t>(Li_[q]);
-            const double l = Lx_[q];
-            yi[0] -= l * x0;
-            yi[1] -= l * x1;
-            yi[2] -= l * x2;
-          }
-          for (; q < p1; ++q) {
-            double* bi = buf + 3 * static_cast<size_t>(top_slot_[static_cast<size_t>(Li_[q])]);
-            const double l = Lx_[q];
-            bi[0] += l * x0;
-            bi[1] += l * x1;
-            bi[2] += l * x2;
-          }
-        }
-    }
-    for (size_t t = 0; t < top_.size(); ++t) {
-      double* yt = y + 3 * static_cast<size_t>(top_[t]);
-      for (int c = 0; c < 3; ++c) yt[c] = (yt[c] - buffer_[0][3 * t + static_cast<size_t>(c)]) - buffer_[1][3 * t + static_cast<size_t>(c)];
-    }
-  }
-  for (const int j : top_) {
+  // Column j: y_j /= L_jj, then y_i −= L_ij y_j for the rows i below; rows from `end` on
+  // (ancestors outside j's set, all in the top) go to `buf` instead, by their top slot.
+  const auto column = [&](int j, int end, double* buf) {
     const int p0 = Lp_[j], p1 = p0 + Lnz_[j];
     const double d = Lx_[p0];
     double* yj = y + 3 * static_cast<size_t>(j);
@@ -188,14 +152,36 @@ void TreeSolve::forward(double* y) const {
     yj[0] = x0;
     yj[1] = x1;
     yj[2] = x2;
-    for (int q = p0 + 1; q < p1; ++q) {
+    int q = p0 + 1;
+    for (; q < p1 && Li_[q] < end; ++q) {
       double* yi = y + 3 * static_cast<size_t>(Li_[q]);
       const double l = Lx_[q];
       yi[0] -= l * x0;
       yi[1] -= l * x1;
       yi[2] -= l * x2;
     }
+    for (; q < p1; ++q) {
+      double* bi = buf + 3 * static_cast<size_t>(top_slot_[static_cast<size_t>(Li_[q])]);
+      const double l = Lx_[q];
+      bi[0] += l * x0;
+      bi[1] += l * x1;
+      bi[2] += l * x2;
+    }
+  };
+  if (!sets_[0].empty() || !sets_[1].empty()) {
+    // The two sets at once, each with its own buffer for the top rows.
+#pragma omp parallel for num_threads(tree_threads()) schedule(static, 1)
+    for (int s = 0; s < 2; ++s) {
+      std::fill(buffer_[s].begin(), buffer_[s].end(), 0.0);
+      for (const Range& r : sets_[s])
+        for (int j = r.begin; j < r.end; ++j) column(j, r.end, buffer_[s].data());
+    }
+    for (size_t t = 0; t < top_.size(); ++t) {
+      double* yt = y + 3 * static_cast<size_t>(top_[t]);
+      for (int c = 0; c < 3; ++c) yt[c] = (yt[c] - buffer_[0][3 * t + static_cast<size_t>(c)]) - buffer_[1][3 * t + static_cast<size_t>(c)];
+    }
   }
+  for (const int j : top_) column(j, n_, nullptr);  // the top's rows are all in the top
 }
 
 void TreeSolve::backward(double* x) const {
