@@ -5,6 +5,8 @@ docs/images/scaling.png (needs python3-matplotlib) and prints the markdown table
 growth exponents for docs/performance.md.
 
     /usr/bin/python3 bench/scaling/run.py [--sizes 1e4,1e5,1e6,5e6] [--repeat 1] [--io /tmp]
+
+The machine probe (build/bench/msmesh_probe) runs first; its figures go into every row.
 """
 import argparse
 import csv
@@ -39,6 +41,13 @@ def main():
     env.setdefault("OMP_WAIT_POLICY", "passive")  # what the msmesh program sets for itself
     env.setdefault("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=33554432:"
                    "glibc.malloc.top_pad=67108864:glibc.malloc.trim_threshold=1073741824")
+    # The machine's memory speed at the time (bench/probe.cpp): the same code measured 2.6x
+    # slower on a day this virtual machine's memory was slower (docs/performance.md).
+    probe_exe = os.path.join(os.path.dirname(args.exe), "msmesh_probe")
+    probe = {}
+    if os.path.exists(probe_exe):
+        probe = json.loads(subprocess.run([probe_exe], check=True, capture_output=True, text=True).stdout)
+        print("machine: " + json.dumps(probe), file=sys.stderr)
     rows = []
     for s in args.sizes.split(","):
         best = None
@@ -49,6 +58,7 @@ def main():
             print(json.dumps(r), file=sys.stderr)
             if best is None or r["seconds_denoise"] < best["seconds_denoise"]:
                 best = r
+        best.update({"probe_" + k: v for k, v in probe.items() if k != "quick"})
         rows.append(best)
 
     keys = list(rows[0].keys())
@@ -56,6 +66,7 @@ def main():
         for k in r:
             if k not in keys:
                 keys.append(k)
+    os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.out, "scaling.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys)
         w.writeheader()
@@ -67,6 +78,9 @@ def main():
         print(f"| {r['faces']:,} | {r['seconds_operators']:.3f} | {r['seconds_normals']:.3f} | {r['seconds_vertices']:.3f} | "
               f"{r['seconds_denoise']:.3f} ({r['cpu_seconds_denoise']:.2f}) | {r['n_step_cg_iterations']} / {r['v_step_cg_iterations']} | "
               f"{r['peak_mb_denoise']:.0f} | {r['peak_mb_denoise'] / (r['faces'] / 1e6):.0f} |")
+    if probe:
+        print(f"machine: triad {probe['triad_gb_s']:.1f} GB/s, latency 16 MB {probe['latency_ns_16mb']:.0f} ns, "
+              f"64 MB {probe['latency_ns_64mb']:.0f} ns, share of two cores {probe['cpu_share']:.2f} (build/bench/msmesh_probe)")
     for key in ("seconds_denoise", "seconds_normals", "seconds_vertices", "peak_mb_denoise"):
         print(f"growth exponent of {key} (faces >= 1e5): {fit_exponent(rows, key):.3f}")
     if "ply_read_mb_s" in rows[-1]:
