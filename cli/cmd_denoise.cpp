@@ -13,6 +13,7 @@
 #include "msmesh/memory.h"
 #include "msmesh/metrics.h"
 #include "msmesh/repair.h"
+#include "msmesh/threads.h"
 #include "msmesh/topology.h"
 #include "report.h"
 
@@ -137,7 +138,8 @@ void run(const Args& a, const Overrides& ov) {
         .add("omega2", o.vertices.omega2).add("omega3", o.vertices.omega3);
     j.add("parameters", params);
     j.add("seconds_read", t_read).add("seconds_normals", r.seconds_normals)
-        .add("seconds_vertices", r.seconds_vertices).add("seconds_write", t_write);
+        .add("seconds_vertices", r.seconds_vertices).add("seconds_write", t_write)
+        .add("threads", threads());
     j.add("normal_iterations", r.normal_report.iterations).add("vertex_iterations", r.vertex_report.iterations);
     j.add("n_step_cg_sweeps", r.normal_report.n_solver_iterations)
         .add("v_step_cg_sweeps", r.vertex_report.solver_iterations);

@@ -7,6 +7,7 @@
 
 #include "command.h"
 #include "msmesh/errors.h"
+#include "msmesh/threads.h"
 
 namespace {
 
@@ -44,6 +45,14 @@ int main(int argc, char** argv) {
       "(denoising, inpainting, segmentation; Liu et al. 2022, NMSTV)."};
   app.require_subcommand(1);
   app.set_version_flag("--version", "msmesh 0.1.0");
+  // --threads before or after the subcommand (fallthrough passes it up to here); applied as
+  // soon as it is parsed, so before any subcommand runs.
+  app.fallthrough();
+  app.add_option_function<int>(
+         "--threads", [](const int& n) { msmesh::set_threads(n); },
+         "Threads for the parallel work (default: every core, or OMP_NUM_THREADS); results are the same for any number")
+      ->check(CLI::Range(1, 4096))
+      ->type_name("N");
   auto& registry = msmesh::cli::command_registry();
   std::sort(registry.begin(), registry.end(), [](const auto& a, const auto& b) { return a.order < b.order; });
   for (const auto& spec : registry) spec.setup(app);

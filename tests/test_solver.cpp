@@ -1,6 +1,6 @@
 // The two solvers of the constant systems (Cholesky factorisation and warm-started
 // conjugate gradients) give the same filtered normals and vertices, and the parallel loops
-// give bit-identical results whatever the number of threads.
+// give bit-identical results whatever the number of threads (set_threads, msmesh --threads).
 #include <gtest/gtest.h>
 
 #ifdef _OPENMP
@@ -10,8 +10,10 @@
 #include "msmesh/denoise.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
+#include "msmesh/io.h"
 #include "msmesh/noise.h"
 #include "msmesh/shapes.h"
+#include "msmesh/threads.h"
 #include "test_helpers.h"
 
 using namespace msmesh;
@@ -135,18 +137,19 @@ TEST(Solver, ResultsDoNotDependOnTheThreadCount) {
   // v-step on two threads (sequentially on one), CG splits its kernels over the threads.
   const Mesh m = noisy_cube(53);
   ASSERT_GE(m.F.rows(), 32768);
-  const int threads = omp_get_max_threads();
+  const int threads = msmesh::threads();
   for (const LinearSolver solver : {LinearSolver::Auto, LinearSolver::CG}) {
     SCOPED_TRACE(solver == LinearSolver::Auto ? "auto (factor)" : "cg");
     DenoiseOptions o = preset_options("cad");
     o.normals.max_iterations = 5;
     o.vertices.max_iterations = 5;
     o.normals.solver = o.vertices.solver = solver;
-    omp_set_num_threads(1);
+    set_threads(1);
+    ASSERT_EQ(msmesh::threads(), 1);
     const DenoiseResult one = denoise(m.V, m.F, o);
-    omp_set_num_threads(std::max(2, threads));
+    set_threads(std::max(2, threads));
     const DenoiseResult many = denoise(m.V, m.F, o);
-    omp_set_num_threads(threads);
+    set_threads(threads);
     EXPECT_EQ(one.V, many.V);  // bit for bit
     EXPECT_EQ(one.normals, many.normals);
     EXPECT_EQ(one.v, many.v);
@@ -181,5 +184,54 @@ TEST(Solver, OneNStepPerIterationAlsoWhenStoppingEarly) {
     EXPECT_EQ(fixed.normals, early.normals);
     EXPECT_EQ(fixed.v, early.v);
     if (solver == LinearSolver::CG) EXPECT_EQ(fixed.n_solver_iterations, early.n_solver_iterations);
+  }
+}
+
+TEST(Threads, SetThreadsChecksItsArgumentAndRestoresTheDefault) {
+  const int initial = msmesh::threads();
+  EXPECT_GE(initial, 1);
+  for (const int bad : {-1, 4097}) {
+    try {
+      set_threads(bad);
+      FAIL() << "no error for " << bad;
+    } catch (const InvalidInput& e) {
+      EXPECT_NE(std::string(e.what()).find("threads: " + std::to_string(bad)), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(msmesh::threads(), initial);  // a refused value changes nothing
+#ifdef _OPENMP
+  set_threads(1);
+  EXPECT_EQ(msmesh::threads(), 1);
+  set_threads(3);
+  EXPECT_EQ(msmesh::threads(), 3);
+  set_threads(0);  // the default again
+  EXPECT_EQ(msmesh::threads(), initial);
+#else
+  set_threads(3);
+  EXPECT_EQ(msmesh::threads(), 1);
+#endif
+}
+
+// msmesh --threads N, before or after the subcommand: the JSON says how many threads ran, the
+// output is the same bytes for one and two threads, and a bad value is refused.
+TEST(Threads, CommandLineOption) {
+  test::TempDir dir;
+  const std::string in = dir.file("in.obj"), a = dir.file("a.ply"), b = dir.file("b.ply");
+  const Mesh m = noisy_cube(6);
+  write_mesh(in, m);
+  const test::CliRun one = test::run_cli("--threads 1 denoise '" + in + "' -o '" + a + "' --preset cad --json");
+  ASSERT_EQ(one.status, 0) << one.out;
+  EXPECT_NE(one.out.find("\"threads\":1"), std::string::npos) << one.out;
+  const test::CliRun two = test::run_cli("denoise '" + in + "' -o '" + b + "' --preset cad --json --threads 2");
+  ASSERT_EQ(two.status, 0) << two.out;
+#ifdef _OPENMP
+  EXPECT_NE(two.out.find("\"threads\":2"), std::string::npos) << two.out;
+#endif
+  EXPECT_EQ(test::read_bytes(a), test::read_bytes(b));
+  EXPECT_FALSE(test::read_bytes(a).empty());
+  for (const char* bad : {"0", "-2", "many"}) {
+    const test::CliRun r = test::run_cli(std::string("--threads ") + bad + " info '" + in + "'");
+    EXPECT_NE(r.status, 0) << bad;
+    EXPECT_NE(r.out.find("--threads"), std::string::npos) << r.out;
   }
 }

@@ -46,6 +46,7 @@ __version__ = "0.1.0"
 __all__ = [
     "denoise", "filter_normals", "update_vertices", "add_noise", "evaluate", "choose_preset",
     "read_mesh", "write_mesh", "repair", "make_shape", "shape_names", "preset_names", "PARAMETERS",
+    "set_threads", "threads",
     "Error", "InvalidInputError", "IoError", "SolverError", "Cancelled", "ProgressEvent",
     "DenoiseOptions", "DenoiseMethod", "LinearSolver", "NormalFilterOptions", "VertexUpdateOptions", "BilateralOptions",
 ]
@@ -95,6 +96,22 @@ def preset_names():
 def shape_names():
     """Names accepted by make_shape()."""
     return list(_core.shape_names())
+
+
+def set_threads(n):
+    """Threads for the parallel work of every later call, from any Python thread: n >= 1, or 0
+    for the default (OMP_NUM_THREADS, else every core). Results are the same for any n.
+    Raises InvalidInputError for n < 0 or n > 4096."""
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)):
+        raise InvalidInputError(f"threads: n must be an integer, got {n!r}")
+    if not 0 <= int(n) <= 4096:
+        raise InvalidInputError(f"threads: {int(n)} is out of range; valid: 1 to 4096, or 0 for the default")
+    _core.set_threads(int(n))
+
+
+def threads():
+    """The number of threads the next call will use."""
+    return _core.threads()
 
 
 def _apply_parameters(options, params, table, function):

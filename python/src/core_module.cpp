@@ -10,6 +10,7 @@
 #include <pybind11/stl.h>
 
 #include <Eigen/Core>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -26,6 +27,7 @@
 #include "msmesh/normal_filter.h"
 #include "msmesh/progress.h"
 #include "msmesh/shapes.h"
+#include "msmesh/threads.h"
 #include "msmesh/topology.h"
 #include "msmesh/vertex_update.h"
 
@@ -144,10 +146,20 @@ class ProgressBridge {
   std::exception_ptr error_;
 };
 
-/// Runs fn(progress_callback) with the GIL released. The callback's own exception takes
-/// precedence over the Cancelled it causes.
+// msmesh.set_threads(n): process-wide for Python (0: the default). The library's setting is
+// OpenMP's, which belongs to each thread, so every call applies it in the thread it runs in.
+std::atomic<int> g_threads{0};
+
+void set_threads_binding(int n) {
+  msmesh::set_threads(n);  // checks n
+  g_threads = n;
+}
+
+/// Runs fn(progress_callback) with the GIL released, with the thread count of set_threads.
+/// The callback's own exception takes precedence over the Cancelled it causes.
 template <class Fn>
 auto run_without_gil(const py::object& progress, Fn&& fn) {
+  msmesh::set_threads(g_threads.load());
   ProgressBridge bridge(progress);
   const ProgressCallback callback = bridge.callback();
   try {
@@ -618,6 +630,11 @@ PYBIND11_MODULE(_core, m) {
   m.def("write_mesh", &write_mesh_binding, py::arg("path"), py::arg("V"), py::arg("F"), py::arg("binary"));
   m.def("make_shape", &make_shape_binding, py::arg("name"), py::arg("resolution"));
   m.def("shape_names", &shape_names);
+  m.def("set_threads", &set_threads_binding, py::arg("n"));
+  m.def("threads", [] {
+    msmesh::set_threads(g_threads.load());
+    return msmesh::threads();
+  });
 
 #ifdef MSMESH_PY_SEGMENT
   m.def("segment", &segment_binding, py::arg("V"), py::arg("F"), py::arg("options"), py::arg("progress") = py::none());

@@ -405,3 +405,29 @@ def test_solver_choice_gives_the_same_result():
     assert sum(rb["vertex_solver_iterations"]) > 0
     with pytest.raises(msmesh.InvalidInputError, match="solver"):
         msmesh.denoise(Vn, F, solver="lu")
+
+
+def test_threads_setting_applies_to_every_thread_and_keeps_results():
+    V, F = msmesh.make_shape("fandisk", 10)
+    Vn = msmesh.add_noise(V, F, sigma=0.2, seed=5)
+    default = msmesh.threads()
+    assert default >= 1
+    try:
+        msmesh.set_threads(1)
+        assert msmesh.threads() == 1
+        seen = []
+        worker = threading.Thread(target=lambda: seen.append(msmesh.threads()))
+        worker.start()
+        worker.join()
+        assert seen == [1]  # process-wide for Python, not only the calling thread
+        one, _ = msmesh.denoise(Vn, F, preset="cad")
+        msmesh.set_threads(2)
+        two, _ = msmesh.denoise(Vn, F, preset="cad")
+        assert np.array_equal(one, two)  # the same bits for any thread count
+        for bad in (-1, 4097, 1.5, True, "2"):
+            with pytest.raises(msmesh.InvalidInputError, match="threads"):
+                msmesh.set_threads(bad)
+        assert msmesh.threads() == 2  # a refused value changes nothing
+    finally:
+        msmesh.set_threads(0)
+    assert msmesh.threads() == default
