@@ -20,12 +20,12 @@
 
 #include <algorithm>
 #include <atomic>
-#include <thread>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <numeric>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -91,6 +91,7 @@ double thread_cpu_seconds() {
 double cpu_share(double seconds) {
   std::atomic<bool> stop{false};
   double cpu[2] = {0, 0};
+  volatile uint64_t sink[2] = {0, 0};  // keeps the spinning loops
   const double t0 = now();
   std::vector<std::thread> threads;
   for (int t = 0; t < 2; ++t)
@@ -99,7 +100,8 @@ double cpu_share(double seconds) {
       uint64_t x = 1;
       while (!stop.load(std::memory_order_relaxed))
         for (int i = 0; i < 10000; ++i) x = x * 6364136223846793005ULL + 1;
-      cpu[t] = thread_cpu_seconds() - c0 + static_cast<double>(x & 1) * 1e-300;
+      sink[t] = x;
+      cpu[t] = thread_cpu_seconds() - c0;
     });
   while (now() - t0 < seconds) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   stop = true;
