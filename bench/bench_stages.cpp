@@ -5,6 +5,7 @@
 #include <map>
 
 #include "msmesh/denoise.h"
+#include "msmesh/presets.h"
 #include "msmesh/geometry.h"
 #include "msmesh/noise.h"
 #include "msmesh/operators.h"

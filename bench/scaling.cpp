@@ -17,6 +17,7 @@
 #include <string>
 
 #include "msmesh/denoise.h"
+#include "msmesh/presets.h"
 #include "msmesh/geometry.h"
 #include "msmesh/io.h"
 #include "msmesh/noise.h"

@@ -5,6 +5,7 @@
 #include "command.h"
 #include "json.h"
 #include "msmesh/denoise.h"
+#include "msmesh/presets.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/normal_filter.h"

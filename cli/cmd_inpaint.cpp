@@ -1,7 +1,6 @@
 // msmesh inpaint: fill the holes of a mesh (CGAL fill-and-fair) and recover their sharp
 // features with NMSTV normal filtering + vertex updating (paper §6.2).
 #include <iostream>
-#include <map>
 #include <memory>
 #include <sstream>
 
@@ -11,31 +10,20 @@
 #include "msmesh/inpaint.h"
 #include "msmesh/geometry.h"
 #include "msmesh/io.h"
+#include "msmesh/parameters.h"
+#include "parameter_options.h"
 #include "report.h"
+#include "usage_error.h"
 
 namespace msmesh::cli {
 namespace {
 
 struct Args {
   std::string input, output, truth;
-  int max_hole_edges = 0, free_ring = 0;
-  double max_hole_diameter = 0;
   std::vector<int> holes;
-  bool list = false, no_features = false, fill_outer = false, all_featured = false, no_flips = false, no_placement = false, no_smoothing = false, json = false, quiet = false, in_place = false,
-       ascii = false;
+  bool list = false, json = false, quiet = false, in_place = false, ascii = false;
   std::string report;  // --report: HTML report (cli/report.h)
-  // Tuning (hidden group): parameters of the feature recovery.
-  double alpha = 0, beta = 0, gamma = 0, rho = 0, omega2 = 0, omega3 = 0;
-  double jump_angle = 0, placement_smoothing = 0, density = 0, outside_alpha = 0, inside_alpha = 0, inside_beta = 0, inside_omega3 = 0;
-  int project = 1, rounds = 0, context_rings = 0, normal_iterations = 0, vertex_iterations = 0;
-};
-
-struct Given {
-  std::map<std::string, CLI::Option*> opts;
-  bool operator()(const std::string& name) const {
-    auto it = opts.find(name);
-    return it != opts.end() && it->second->count() > 0;
-  }
+  std::unique_ptr<ParameterOptions<InpaintOptions>> parameters;  // every InpaintOptions number (parameters.h)
 };
 
 const char* action_name(HoleAction a) {
@@ -94,47 +82,20 @@ Json errors_json(const InpaintErrors& e) {
   return k;
 }
 
-void run(const Args& a, const Given& given) {
+void run(const Args& a) {
   if (a.list) {
     list_holes(a);
     return;
   }
-  if (a.output.empty()) throw InvalidInput("inpaint: --output is required (or --list to only list the holes)");
+  if (a.output.empty()) throw UsageError("inpaint: --output is required (or --list to only list the holes)");
+  InpaintOptions o;
+  o.holes = a.holes;
+  a.parameters->apply(o);
+  o.validate();
   check_not_overwriting_input(a.input, a.output, a.in_place);
   const Mesh mesh = read_mesh(a.input);
   Mesh truth;
   if (!a.truth.empty()) truth = read_mesh(a.truth);
-
-  InpaintOptions o;
-  o.max_hole_edges = a.max_hole_edges;
-  o.max_hole_diameter = a.max_hole_diameter;
-  o.holes = a.holes;
-  o.fill_outer_boundary = a.fill_outer;
-  o.recover_features = !a.no_features;
-  o.free_ring = a.free_ring;
-  o.all_holes_featured = a.all_featured;
-  o.crease_flips = !a.no_flips;
-  o.orthogonal_placement = !a.no_placement;
-  o.smooth_normals = !a.no_smoothing;
-  if (given("--jump-angle")) o.smooth_jump_angle = a.jump_angle;
-  if (given("--placement-smoothing")) o.placement_smoothing = a.placement_smoothing;
-  if (given("--alpha")) o.normals.alpha = a.alpha;
-  if (given("--beta")) o.normals.beta = a.beta;
-  if (given("--gamma")) o.normals.gamma = a.gamma;
-  if (given("--rho")) o.normals.rho = a.rho;
-  if (given("--normal-iterations")) o.normals.max_iterations = a.normal_iterations;
-  if (given("--project-each-iteration")) o.normals.project_each_iteration = a.project != 0;
-  if (given("--omega2")) o.vertices.omega2 = a.omega2;
-  if (given("--omega3")) o.vertices.omega3 = a.omega3;
-  if (given("--vertex-iterations")) o.vertices.max_iterations = a.vertex_iterations;
-  if (given("--outside-alpha")) o.outside_alpha = a.outside_alpha;
-  if (given("--inside-alpha")) o.inside_alpha = a.inside_alpha;
-  if (given("--inside-beta")) o.inside_beta = a.inside_beta;
-  if (given("--inside-omega3")) o.inside_omega3 = a.inside_omega3;
-  if (given("--rounds")) o.rounds = a.rounds;
-  if (given("--density")) o.density = a.density;
-  if (given("--context-rings")) o.context_rings = a.context_rings;
-  o.validate();
 
   const InpaintResult r = inpaint(mesh.V, mesh.F, o, make_progress_bar(a.quiet || a.json));
   finish_progress_line();
@@ -181,12 +142,7 @@ void run(const Args& a, const Given& given) {
       hs.push_back(h);
     }
     j.add("holes", hs);
-    Json params;
-    params.add("alpha", o.normals.alpha).add("beta", o.normals.beta).add("gamma", o.normals.gamma)
-        .add("rho", o.normals.rho).add("omega2", o.vertices.omega2).add("omega3", o.vertices.omega3)
-        .add("outside_alpha", o.outside_alpha).add("inside_alpha", o.inside_alpha).add("inside_beta", o.inside_beta)
-        .add("inside_omega3", o.inside_omega3).add("rounds", o.rounds).add("free_ring", o.free_ring);
-    j.add("parameters", params);
+    j.add("parameters", parameters_json(inpaint_parameters(), o));
     j.add("seconds_fill", r.seconds_fill).add("seconds_features", r.seconds_features);
     if (!a.truth.empty()) j.add("truth", a.truth).add("errors", errors_json(err));
     std::cout << j.str() << "\n";
@@ -242,60 +198,22 @@ void run(const Args& a, const Given& given) {
 
 const Registrar reg("inpaint", 80, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
-  auto given = std::make_shared<Given>();
   CLI::App* c = app.add_subcommand(
       "inpaint", "Fill holes (CGAL fill-and-fair) and recover their sharp features with NMSTV (paper 6.2)");
   c->add_option("input", a->input, "Input mesh with holes (obj, off, ply, stl)")->required();
   c->add_option("-o,--output", a->output, "Output mesh; format from the extension");
-  c->add_option("--max-hole-edges", a->max_hole_edges, "Skip holes with more boundary edges (0: no limit)")
-      ->capture_default_str();
-  c->add_option("--max-hole-diameter", a->max_hole_diameter,
-                "Skip holes wider than this many mean edge lengths (0: no limit)")
-      ->capture_default_str();
   c->add_option("--holes", a->holes, "Fill exactly these holes (indices from --list), e.g. 0,2,5")->delimiter(',');
-  c->add_flag("--fill-outer", a->fill_outer, "Also fill the outer boundary of an open surface");
   c->add_flag("--list", a->list, "Print the holes (index, edges, diameter) and exit");
-  c->add_option("--free-ring", a->free_ring,
-                "Let K rings of input vertices around each hole move (0: input vertices stay exactly)")
-      ->capture_default_str();
-  c->add_flag("--no-features", a->no_features, "CGAL fill-and-fair only (no feature recovery)");
-  c->add_flag("--all-holes-features", a->all_featured,
-              "Recover features in every filled hole (default: only where a crease runs into the hole)");
   c->add_option("--truth", a->truth, "Ground-truth mesh: print the filled region's distance errors");
   c->add_option("--report", a->report, "Write an HTML report: 3D viewer (new faces tinted), hole table, plots");
-  auto add = [&](const std::string& name, auto* target, const std::string& help) {
-    given->opts[name] = c->add_option(name, *target, help)->group("Tuning (defaults in docs/inpainting.md)");
-  };
-  add("--alpha", &a->alpha, "alpha > 0 of the normal filtering (default 2)");
-  add("--beta", &a->beta, "beta > 0 (default 0.02)");
-  add("--gamma", &a->gamma, "gamma > 0 (default 0.5)");
-  add("--rho", &a->rho, "rho > 0 (default 0.1)");
-  add("--normal-iterations", &a->normal_iterations, "normal filtering iterations (default 30)");
-  add("--project-each-iteration", &a->project, "1: project normals after every N-step (default), 0: once at the end");
-  add("--omega2", &a->omega2, "omega2 >= 0 of the vertex update (default 0)");
-  add("--omega3", &a->omega3, "omega3 > 0 of the vertex update (default 0.1)");
-  add("--vertex-iterations", &a->vertex_iterations, "vertex update iterations (default 60)");
-  add("--outside-alpha", &a->outside_alpha, "alpha multiplier on input faces (default 100)");
-  add("--inside-alpha", &a->inside_alpha, "alpha multiplier on new faces (default 1e-6)");
-  add("--inside-beta", &a->inside_beta, "beta multiplier on edges of new faces (default 0.1)");
-  add("--inside-omega3", &a->inside_omega3, "omega3 multiplier on new vertices (default 1e-4)");
-  add("--density", &a->density, "CGAL density_control_factor of the fill (default: sqrt 2 with --no-features, 2 otherwise)");
-  add("--rounds", &a->rounds, "rounds of normal filtering + vertex update (default 2)");
-  add("--context-rings", &a->context_rings, "rings of input faces around each hole in the solves (default 6)");
-  c->add_flag("--no-smoothing", a->no_smoothing, "Use NMSTV's normals as they are (no piecewise-smooth completion)")
-      ->group("Tuning (defaults in docs/inpainting.md)");
-  c->add_flag("--no-placement", a->no_placement, "Start the vertex update from the fill, not the orthogonal placement")
-      ->group("Tuning (defaults in docs/inpainting.md)");
-  add("--jump-angle", &a->jump_angle,
-      "normals further apart than this (deg) form the edge set; smooth elsewhere (default 0: per hole)");
-  add("--placement-smoothing", &a->placement_smoothing, "membrane weight of the orthogonal placement (default 1e-3)");
-  c->add_flag("--no-crease-flips", a->no_flips, "Do not flip edges of new faces towards the creases")
-      ->group("Tuning (defaults in docs/inpainting.md)");
+  a->parameters = std::make_unique<ParameterOptions<InpaintOptions>>(
+      c, inpaint_parameters(), std::vector<std::pair<std::string, InpaintOptions>>{{"", InpaintOptions{}}},
+      "(docs/inpainting.md)");
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
   c->add_flag("-q,--quiet", a->quiet, "No progress bar and no per-hole lines");
   c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");
   c->add_flag("--in-place", a->in_place, "Allow the output to overwrite the input file");
-  c->callback([a, given]() { run(*a, *given); });
+  c->callback([a]() { run(*a); });
 });
 
 }  // namespace

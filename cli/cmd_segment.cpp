@@ -9,10 +9,13 @@
 #include "command.h"
 #include "json.h"
 #include "msmesh/denoise.h"
+#include "msmesh/presets.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/render.h"
+#include "msmesh/parameters.h"
 #include "msmesh/segment.h"
+#include "parameter_options.h"
 #include "report.h"
 
 namespace msmesh::cli {
@@ -21,8 +24,8 @@ namespace {
 struct Args {
   std::string input, output, labels, parts, preset = "cad";
   bool denoise_first = false, json = false, quiet = false, ascii = false, in_place = false;
-  double angle = 15.0, clamp = 0.001, min_area = -1;
   std::string report;  // --report: HTML report (cli/report.h)
+  std::unique_ptr<ParameterOptions<SegmentOptions>> parameters;  // --angle, --alpha ... (parameters.h)
 };
 
 // The faces of one segment as a mesh of their own, vertices re-indexed in order of use.
@@ -56,6 +59,11 @@ Mesh extract_part(const Mesh& m, const Eigen::VectorXi& labels, int label) {
 }
 
 void run(const Args& a) {
+  const DenoiseOptions preset = preset_options(a.preset);
+  SegmentOptions o;
+  o.normals = preset.normals;
+  a.parameters->apply(o);
+  o.validate();
   if (mesh_format_from_path(a.output) != "ply")
     throw InvalidInput("segment: the output '" + a.output + "' must be a .ply file (it carries one colour per face)");
   check_not_overwriting_input(a.input, a.output, a.in_place);
@@ -63,7 +71,6 @@ void run(const Args& a) {
   const auto t0 = std::chrono::steady_clock::now();
   Mesh mesh = read_mesh(a.input);
 
-  const DenoiseOptions preset = preset_options(a.preset);
   const ProgressCallback progress = make_progress_bar(a.quiet || a.json);
   double seconds_denoise = 0;
   if (a.denoise_first) {
@@ -72,12 +79,6 @@ void run(const Args& a) {
     finish_progress_line();
     seconds_denoise = std::chrono::duration<double>(std::chrono::steady_clock::now() - td).count();
   }
-  SegmentOptions o;
-  o.normals = preset.normals;
-  o.smooth_angle_deg = a.angle;
-  o.clamp_probability = a.clamp;
-  if (a.min_area >= 0) o.min_area_fraction = a.min_area;
-  o.validate();
   const auto ts = std::chrono::steady_clock::now();
   const SegmentResult r = segment(mesh.V, mesh.F, o, progress);
   finish_progress_line();
@@ -119,7 +120,7 @@ void run(const Args& a) {
           .add("area_fraction", total_area > 0 ? r.areas(s) / total_area : 0.0);
       segs.push_back(k);
     }
-    j.add("segment_list", segs);
+    j.add("segment_list", segs).add("parameters", parameters_json(segment_parameters(), o));
     j.add("normal_iterations", r.normal_report.iterations).add("seconds_denoise", seconds_denoise)
         .add("seconds_segment", seconds_segment).add("seconds_total", seconds);
     if (!a.labels.empty()) j.add("labels", a.labels);
@@ -150,13 +151,14 @@ const Registrar reg("segment", 70, [](CLI::App& app) {
   c->add_option("--report", a->report, "Write an HTML report: 3D viewer of the segments and edge field, segment table");
   c->add_flag("--denoise", a->denoise_first, "Denoise first (msmesh denoise with the same preset), then segment");
   c->add_option("--preset", a->preset, "Normal filter parameters: cad (sharp features) or smooth (organic)")
-      ->check(CLI::IsMember({"cad", "smooth"}))
+      ->check(CLI::IsMember(preset_names()))
       ->capture_default_str();
-  c->add_option("--angle", a->angle, "Faces whose regularised normals are within this angle (degrees) never split")
-      ->capture_default_str();
-  c->add_option("--clamp", a->clamp, "Clamp split probabilities to [c, 1 - c]")->capture_default_str();
-  c->add_option("--min-area", a->min_area,
-                "Merge segments below this fraction of the total area into a neighbour (0: off; default 0.002)");
+  std::vector<std::pair<std::string, SegmentOptions>> defaults;
+  for (const std::string& name : preset_names()) {
+    defaults.emplace_back(name, SegmentOptions{});
+    defaults.back().second.normals = preset_options(name).normals;
+  }
+  a->parameters = std::make_unique<ParameterOptions<SegmentOptions>>(c, segment_parameters(), defaults, "");
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
   c->add_flag("-q,--quiet", a->quiet, "No progress bar");
   c->add_flag("--ascii", a->ascii, "Write the PLY as ascii instead of binary");

@@ -14,6 +14,7 @@
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/metrics.h"
+#include "msmesh/parameters.h"
 
 // The viewer bundle, embedded at build time (see report/README.md): CMake reads
 // report/dist/viewer.js into a generated header. Without it (a build system that did not run
@@ -622,25 +623,18 @@ std::string num(double x, int precision = 4) {
 
 std::string file_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
-void add_normal_params(ReportData& d, const NormalFilterOptions& n) {
-  d.parameters.push_back({"alpha (fidelity)", num(n.alpha)});
-  d.parameters.push_back({"beta (edge set)", num(n.beta)});
-  d.parameters.push_back({"gamma (normal variation)", num(n.gamma)});
-  d.parameters.push_back({"epsilon (phase-field width)", num(n.epsilon)});
-  d.parameters.push_back({"rho (non-convexity)", num(n.rho)});
-  d.parameters.push_back({"r (ADMM penalty)", num(n.penalty)});
-  d.parameters.push_back({"nu (multiplier step)", num(n.relaxation)});
-  d.parameters.push_back({"IRLA reweighting", n.reweight ? "on (NMSTV)" : "off (MSTV)"});
-  d.parameters.push_back({"v0", num(n.v_initial)});
-  d.parameters.push_back({"normal iterations (max), tolerance", std::to_string(n.max_iterations) + ", " + num(n.tolerance)});
-  d.parameters.push_back({"project normals each iteration", n.project_each_iteration ? "yes" : "no (once at the end)"});
-}
-
-void add_vertex_params(ReportData& d, const VertexUpdateOptions& v) {
-  d.parameters.push_back({"omega1 (normal matching)", num(v.omega1)});
-  d.parameters.push_back({"omega2 (fairness)", num(v.omega2)});
-  d.parameters.push_back({"omega3 (closeness)", num(v.omega3)});
-  d.parameters.push_back({"vertex iterations (max), tolerance", std::to_string(v.max_iterations) + ", " + num(v.tolerance)});
+/// The rows of the report's parameter table, from the parameter table (parameters.h): every
+/// parameter whose group is in `groups` (empty: all).
+template <class Options>
+void add_parameters(ReportData& d, const ParameterTable<Options>& table, const Options& o,
+                    const std::vector<std::string>& groups = {}) {
+  for (const Parameter<Options>& p : table) {
+    const ParameterInfo& i = p.info;
+    if (!groups.empty() && std::find(groups.begin(), groups.end(), i.group) == groups.end()) continue;
+    std::string value = i.type == ParameterType::Boolean ? (p.get(o) != 0 ? "yes" : "no") : i.format(p.get(o));
+    if (!i.unit.empty()) value += " " + i.unit;
+    d.parameters.push_back({i.name + (i.symbol.empty() ? "" : " (" + i.symbol + ")") + ": " + i.help, value});
+  }
 }
 
 void add_plots(ReportData& d, const NormalFilterResult& n, const VertexUpdateResult* v) {
@@ -697,13 +691,10 @@ void write_denoise_report(const std::string& path, const std::string& input_path
   d.parameters.push_back({"method", method});
   if (o.method != DenoiseMethod::Bilateral) {
     d.parameters.push_back({"preset", preset});
-    add_normal_params(d, o.normals);
-    add_vertex_params(d, o.vertices);
+    d.parameters.push_back({"IRLA reweighting", o.method == DenoiseMethod::NMSTV ? "on (NMSTV)" : "off (MSTV)"});
+    add_parameters(d, denoise_parameters(), o, {"normal filtering", "vertex update", "solver"});
   } else {
-    d.parameters.push_back({"sigma_r", num(o.bilateral.sigma_r)});
-    d.parameters.push_back({"sigma_s", o.bilateral.sigma_s > 0 ? num(o.bilateral.sigma_s) : "auto"});
-    d.parameters.push_back({"normal passes", std::to_string(o.bilateral.normal_iterations)});
-    d.parameters.push_back({"vertex passes", std::to_string(o.bilateral.vertex_iterations)});
+    add_parameters(d, denoise_parameters(), o, {"bilateral filtering"});
   }
 
   if (truth) {
@@ -751,10 +742,7 @@ void write_segment_report(const std::string& path, const std::string& input_path
   d.meshes.push_back({"mesh", mesh.V, mesh.F, {}, r.v, r.labels, {}});
   d.initial_color = "labels";
   d.parameters.push_back({"input", input_path});
-  add_normal_params(d, o.normals);
-  d.parameters.push_back({"smooth angle (deg)", num(o.smooth_angle_deg)});
-  d.parameters.push_back({"clamp probability", num(o.clamp_probability)});
-  d.parameters.push_back({"min area fraction", num(o.min_area_fraction)});
+  add_parameters(d, segment_parameters(), o);
   ReportTable t;
   t.header = {"segment", "faces", "area", "area (%)"};
   std::vector<long> faces(r.count, 0);
@@ -782,14 +770,7 @@ void write_inpaint_report(const std::string& path, const std::string& input_path
   if (truth) d.meshes.push_back({"truth", truth->V, truth->F, {}, {}, {}, {}});
   d.initial_mesh = 1;
   d.parameters.push_back({"input", input_path});
-  d.parameters.push_back({"recover features", o.recover_features ? "yes" : "no"});
-  add_normal_params(d, o.normals);
-  add_vertex_params(d, o.vertices);
-  d.parameters.push_back({"outside / inside alpha multipliers", num(o.outside_alpha) + " / " + num(o.inside_alpha)});
-  d.parameters.push_back({"inside beta / omega3 multipliers", num(o.inside_beta) + " / " + num(o.inside_omega3)});
-  d.parameters.push_back({"rounds, context rings, free ring",
-                          std::to_string(o.rounds) + ", " + std::to_string(o.context_rings) + ", " +
-                              std::to_string(o.free_ring)});
+  add_parameters(d, inpaint_parameters(), o);
   ReportTable t;
   t.header = {"hole", "edges", "diameter", "action", "new faces", "features"};
   for (size_t i = 0; i < r.holes.size(); ++i) {

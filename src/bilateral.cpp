@@ -4,25 +4,16 @@
 #include <sstream>
 #include <vector>
 
-#include "msmesh/denoise.h"
+#include "msmesh/bilateral.h"
 #include "msmesh/errors.h"
+#include "msmesh/parameters.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
 #include "normalize.h"
 
 namespace msmesh {
 
-void BilateralOptions::validate() const {
-  auto fail = [](const char* name, double value, const char* range) {
-    std::ostringstream os;
-    os << "bilateral filtering: " << name << " = " << value << " is out of range; valid: " << range;
-    throw InvalidInput(os.str());
-  };
-  if (normal_iterations < 1 || normal_iterations > 10000) fail("normal_iterations", normal_iterations, "[1, 10000]");
-  if (vertex_iterations < 1 || vertex_iterations > 10000) fail("vertex_iterations", vertex_iterations, "[1, 10000]");
-  if (!(std::isfinite(sigma_r) && sigma_r > 0 && sigma_r <= 2)) fail("sigma_r", sigma_r, "(0, 2]");
-  if (!(std::isfinite(sigma_s) && sigma_s >= 0)) fail("sigma_s", sigma_s, ">= 0 (0 = automatic)");
-}
+void BilateralOptions::validate() const { check_parameters(bilateral_parameters(), *this); }
 
 namespace {
 

@@ -40,63 +40,6 @@ void DenoiseOptions::validate() const {
   }
 }
 
-std::vector<std::string> preset_names() { return {"cad", "smooth", "auto"}; }
-
-DenoiseOptions preset_options(const std::string& name) {
-  DenoiseOptions o;
-  // Units: mean edge length 1 (DESIGN.md §"Scale"). See docs/presets.md for how these
-  // values were chosen on the public test meshes.
-  if (name == "cad") {
-    o.normals.alpha = 2.5;
-    o.normals.beta = 0.02;
-    o.normals.gamma = 2.0;
-    o.normals.rho = 0.1;
-    o.normals.penalty = 2.0;
-    o.vertices.omega2 = 0.03;
-    o.vertices.omega3 = 0.1;
-  } else if (name == "smooth") {
-    o.normals.alpha = 2.0;
-    o.normals.beta = 2.0;      // v ≈ 1 everywhere: the edge field only hurts organic shapes
-    o.normals.gamma = 2.0;
-    o.normals.rho = 0.9;
-    o.normals.penalty = 0.1;   // slow ADMM = 30 iterations stop well short of the TV staircase
-    o.vertices.omega2 = 0.3;
-    o.vertices.omega3 = 0.3;
-  } else {
-    throw InvalidInput("unknown preset '" + name + "'; valid: cad, smooth, auto");
-  }
-  return o;
-}
-
-PresetChoice choose_preset(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
-  validate_mesh(V, F, "preset choice");
-  PresetChoice c;
-  // Pre-smooth the normals with bilateral passes, then look at the dihedral angles of the
-  // smoothed normals, weighted by edge length. CAD parts (and scans of them) have either a
-  // clear set of strong creases (> 30°) or mostly flat regions (< 1°); organic shapes have
-  // neither. Thresholds measured on the 17 public noisy meshes (docs/presets.md).
-  BilateralOptions bo;
-  bo.normal_iterations = 15;
-  const Eigen::MatrixXd N = bilateral_filter_normals(V, F, bo);
-  const Eigen::MatrixXd N0 = face_normals(V, F);
-  const Topology t = build_topology(F, V.rows());
-  const Eigen::VectorXd len = edge_lengths(V, t);
-  double total = 0, flat = 0, sharp = 0, raw_dev = 0;
-  for (Eigen::Index e = 0; e < t.num_edges(); ++e) {
-    if (!t.edge_is_interior[e]) continue;
-    const double a = std::acos(std::clamp(N.row(t.edge_faces(e, 0)).dot(N.row(t.edge_faces(e, 1))), -1.0, 1.0));
-    total += len(e);
-    if (a < 1.0 * M_PI / 180) flat += len(e);
-    if (a > 30.0 * M_PI / 180) sharp += len(e);
-  }
-  for (Eigen::Index f = 0; f < F.rows(); ++f) raw_dev += std::acos(std::clamp(N.row(f).dot(N0.row(f)), -1.0, 1.0));
-  c.sharp_fraction = total > 0 ? sharp / total : 0;
-  c.flat_fraction = total > 0 ? flat / total : 0;
-  c.noise_level = F.rows() ? raw_dev / double(F.rows()) : 0;
-  c.preset = (c.sharp_fraction >= 0.03 || c.flat_fraction >= 0.5) ? "cad" : "smooth";
-  return c;
-}
-
 double denoise_memory_estimate(Eigen::Index num_vertices, Eigen::Index num_faces, const DenoiseOptions& o) {
   const double per_face = o.method == DenoiseMethod::Bilateral ? kBilateralBytesPerFace : kBytesPerFace;
   return per_face * static_cast<double>(num_faces) + kBytesPerVertex * static_cast<double>(num_vertices);

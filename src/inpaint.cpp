@@ -19,9 +19,11 @@
 
 #include "hole_fill.h"
 #include "msmesh/errors.h"
+#include "msmesh/parameters.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
 #include "msmesh/metrics.h"
+#include "msmesh/presets.h"
 #include "msmesh/topology.h"
 #include "union_find.h"
 
@@ -296,63 +298,14 @@ std::vector<Hole> find_holes(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F)
 // Inpainting
 // ---------------------------------------------------------------------------------------
 
-NormalFilterOptions InpaintOptions::default_normal_options() {
-  NormalFilterOptions o;
-  o.alpha = 2.0;
-  o.beta = 0.02;
-  o.gamma = 0.5;
-  o.rho = 0.1;
-  // Inside a hole the fidelity is ~0, so only the unit-length projection keeps the normals
-  // from shrinking towards their average across a crease (the relaxed problem is then a
-  // vector TV whose minimiser blends the two sides): project after every N-step, as the paper.
-  o.project_each_iteration = true;
-  return o;
-}
+NormalFilterOptions InpaintOptions::default_normal_options() { return inpaint_normal_options(); }
 
-VertexUpdateOptions InpaintOptions::default_vertex_options() {
-  VertexUpdateOptions o;
-  o.omega1 = 1.0;
-  o.omega2 = 0.0;
-  o.omega3 = 0.1;
-  o.max_iterations = 60;
-  return o;
-}
+VertexUpdateOptions InpaintOptions::default_vertex_options() { return inpaint_vertex_options(); }
 
 void InpaintOptions::validate() const {
-  auto fail = [](const std::string& name, double value, const char* range) {
-    std::ostringstream os;
-    os << "inpainting: " << name << " = " << value << " is out of range; valid: " << range;
-    throw InvalidInput(os.str());
-  };
-  if (max_hole_edges < 0) fail("max_hole_edges", max_hole_edges, ">= 0 (0: no limit)");
-  if (!(std::isfinite(max_hole_diameter) && max_hole_diameter >= 0))
-    fail("max_hole_diameter", max_hole_diameter, ">= 0 (0: no limit)");
   for (int i : holes)
-    if (i < 0) fail("hole index", i, ">= 0");
-  if (free_ring < 0 || free_ring > 1000) fail("free_ring", free_ring, "[0, 1000]");
-  auto positive = [&](const char* name, double x) {
-    if (!(std::isfinite(x) && x > 0)) fail(name, x, "> 0");
-  };
-  positive("outside_alpha", outside_alpha);
-  if (!(std::isfinite(inside_alpha) && inside_alpha >= 0)) fail("inside_alpha", inside_alpha, ">= 0");
-  positive("inside_beta", inside_beta);
-  if (!(std::isfinite(inside_omega3) && inside_omega3 >= 0)) fail("inside_omega3", inside_omega3, ">= 0");
-  positive("ring_omega3", ring_omega3);
-  positive("pinned_omega3", pinned_omega3);
-  if (!(std::isfinite(density) && density >= 0)) fail("density", density, ">= 0 (0: automatic)");
-  if (!(std::isfinite(feature_density) && feature_density > 0)) fail("feature_density", feature_density, "> 0");
-  if (!(std::isfinite(feature_angle) && feature_angle > 0 && feature_angle < 180))
-    fail("feature_angle", feature_angle, "(0, 180) degrees");
-  if (!(std::isfinite(smooth_angle) && smooth_angle > 0 && smooth_angle <= 180))
-    fail("smooth_angle", smooth_angle, "(0, 180] degrees");
-  if (!(std::isfinite(smooth_jump_angle) && smooth_jump_angle >= 0 && smooth_jump_angle < 180))
-    fail("smooth_jump_angle", smooth_jump_angle, "[0, 180) degrees (0: automatic)");
-  if (!(std::isfinite(placement_smoothing) && placement_smoothing > 0))
-    fail("placement_smoothing", placement_smoothing, "> 0");
-  if (context_rings < 1 || context_rings > 1000) fail("context_rings", context_rings, "[1, 1000]");
-  if (rounds < 1 || rounds > 100) fail("rounds", rounds, "[1, 100]");
-  normals.validate();
-  vertices.validate();
+    if (i < 0) throw InvalidInput("inpainting: hole index " + std::to_string(i) + " is out of range; valid: >= 0");
+  check_parameters(inpaint_parameters(), *this);  // with the normal filter's and vertex update's
 }
 
 namespace {

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "msmesh/errors.h"
+#include "msmesh/parameters.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
 #include "msmesh/operators.h"
@@ -21,34 +22,7 @@
 
 namespace msmesh {
 
-namespace {
-
-void require(bool ok, const char* name, double value, const char* range) {
-  if (ok) return;
-  std::ostringstream os;
-  os << "normal filtering: " << name << " = " << value << " is out of range; valid: " << range;
-  throw InvalidInput(os.str());
-}
-
-
-}  // namespace
-
-void NormalFilterOptions::validate() const {
-  auto pos = [](double x) { return std::isfinite(x) && x > 0; };
-  require(pos(alpha), "alpha", alpha, "> 0");
-  require(pos(beta), "beta", beta, "> 0");
-  require(pos(gamma), "gamma", gamma, "> 0");
-  require(pos(epsilon), "epsilon", epsilon, "> 0");
-  require(pos(rho), "rho", rho, "> 0");
-  require(pos(penalty), "penalty (r_p)", penalty, "> 0");
-  require(std::isfinite(relaxation) && relaxation > 0 && relaxation < (1 + std::sqrt(5.0)) / 2, "relaxation (nu)",
-          relaxation, "(0, 1.618...)");
-  require(max_iterations >= 1 && max_iterations <= 100000, "max_iterations", max_iterations, "[1, 100000]");
-  require(std::isfinite(tolerance) && tolerance >= 0, "tolerance", tolerance, ">= 0");
-  require(std::isfinite(solver_tolerance) && solver_tolerance > 0 && solver_tolerance < 1, "solver_tolerance",
-          solver_tolerance, "(0, 1)");
-  require(std::isfinite(v_initial) && v_initial >= 0 && v_initial <= 1, "v_initial", v_initial, "[0, 1]");
-}
+void NormalFilterOptions::validate() const { check_parameters(normal_filter_parameters(), *this); }
 
 namespace {
 

@@ -9,6 +9,7 @@
 
 #include "msmesh/denoise.h"
 #include "msmesh/errors.h"
+#include "msmesh/parameters.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
 #include "msmesh/topology.h"
@@ -72,18 +73,9 @@ void merge_small_segments(std::vector<int>& L, int k, const Topology& topo, cons
 
 }  // namespace
 
-NormalFilterOptions default_segment_normal_options() { return preset_options("cad").normals; }
-
 void SegmentOptions::validate() const {
-  const char* w = "segmentation";
-  normals.validate();
+  check_parameters(segment_parameters(), *this);  // with the normal filter's
   multicut.validate();
-  require(std::isfinite(smooth_angle_deg) && smooth_angle_deg > 0 && smooth_angle_deg < 180, w, "smooth_angle_deg",
-          smooth_angle_deg, "(0, 180)");
-  require(std::isfinite(clamp_probability) && clamp_probability > 0 && clamp_probability < 0.5, w,
-          "clamp_probability", clamp_probability, "(0, 0.5)");
-  require(std::isfinite(min_area_fraction) && min_area_fraction >= 0 && min_area_fraction < 1, w,
-          "min_area_fraction", min_area_fraction, "[0, 1)");
 }
 
 Eigen::VectorXd normalize_edge_field(const Eigen::VectorXd& v) {

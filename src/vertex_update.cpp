@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "msmesh/errors.h"
+#include "msmesh/parameters.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
 #include "msmesh/operators.h"
@@ -19,20 +20,7 @@
 
 namespace msmesh {
 
-void VertexUpdateOptions::validate() const {
-  auto fail = [](const char* name, double value, const char* range) {
-    std::ostringstream os;
-    os << "vertex update: " << name << " = " << value << " is out of range; valid: " << range;
-    throw InvalidInput(os.str());
-  };
-  if (!(std::isfinite(omega1) && omega1 > 0)) fail("omega1", omega1, "> 0");
-  if (!(std::isfinite(omega2) && omega2 >= 0)) fail("omega2", omega2, ">= 0");
-  if (!(std::isfinite(omega3) && omega3 > 0)) fail("omega3", omega3, "> 0");
-  if (max_iterations < 1 || max_iterations > 100000) fail("max_iterations", max_iterations, "[1, 100000]");
-  if (!(std::isfinite(tolerance) && tolerance >= 0)) fail("tolerance", tolerance, ">= 0");
-  if (!(std::isfinite(solver_tolerance) && solver_tolerance > 0 && solver_tolerance < 1))
-    fail("solver_tolerance", solver_tolerance, "(0, 1)");
-}
+void VertexUpdateOptions::validate() const { check_parameters(vertex_update_parameters(), *this); }
 
 namespace {
 

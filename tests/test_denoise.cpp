@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "msmesh/denoise.h"
+#include "msmesh/presets.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/metrics.h"

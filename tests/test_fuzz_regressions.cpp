@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kSource = fs::path(__FILE__).parent_path().parent_path();
+const fs::path kSource = MSMESH_SOURCE_DIR;  // not __FILE__: ccache may make it relative
 const char* const kFormats[] = {"obj", "off", "ply", "stl"};
 
 std::vector<fs::path> files_in(const fs::path& dir) {

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "msmesh/denoise.h"
+#include "msmesh/presets.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/io.h"

@@ -197,7 +197,7 @@ TEST(Segment, RejectsBadOptionsAndInput) {
     segment(m.V, m.F, o);
     FAIL() << "expected InvalidInput";
   } catch (const InvalidInput& e) {
-    EXPECT_NE(std::string(e.what()).find("smooth_angle_deg"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("angle = 0"), std::string::npos);
   }
   o = SegmentOptions();
   o.clamp_probability = 0.5;

@@ -8,6 +8,7 @@
 #endif
 
 #include "msmesh/denoise.h"
+#include "msmesh/presets.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/io.h"
@@ -120,7 +121,7 @@ TEST(Solver, BadSolverToleranceIsRejectedWithItsRange) {
     filter_normals(m.V, m.F, o);
     FAIL() << "accepted solver_tolerance 0";
   } catch (const InvalidInput& e) {
-    EXPECT_NE(std::string(e.what()).find("solver_tolerance"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("solver-tolerance"), std::string::npos);
     EXPECT_NE(std::string(e.what()).find("(0, 1)"), std::string::npos);
   }
   VertexUpdateOptions vo;

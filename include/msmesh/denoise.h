@@ -1,9 +1,11 @@
-// Denoising (paper §6.1): normal filtering followed by vertex updating, with presets.
+// Denoising (paper §6.1): normal filtering followed by vertex updating. The named parameter
+// sets (presets, and "auto", chosen from the mesh) are in presets.h.
 #pragma once
 #include <Eigen/Core>
 #include <string>
 #include <vector>
 
+#include "msmesh/bilateral.h"
 #include "msmesh/normal_filter.h"
 #include "msmesh/progress.h"
 #include "msmesh/vertex_update.h"
@@ -16,15 +18,8 @@ enum class DenoiseMethod {
   Bilateral,  ///< bilateral normal filtering (Zheng et al. 2011) + its classic vertex update
 };
 
-/// Parameters of bilateral normal filtering (Zheng et al. 2011) and its vertex update.
-struct BilateralOptions {
-  int normal_iterations = 20;  ///< normal filtering passes (≥ 1)
-  double sigma_r = 0.35;       ///< range (normal difference) Gaussian width, in (0, 2]
-  double sigma_s = 0.0;        ///< spatial width, mean-edge units; 0 = mean distance between adjacent face centres
-  int vertex_iterations = 20;  ///< vertex update passes (≥ 1)
-  void validate() const;
-};
-
+/// Options of denoise(). The defaults are those of preset "cad" (presets.h); ranges and help of
+/// every parameter in denoise_parameters() (parameters.h).
 struct DenoiseOptions {
   DenoiseMethod method = DenoiseMethod::NMSTV;
   NormalFilterOptions normals;
@@ -32,25 +27,6 @@ struct DenoiseOptions {
   BilateralOptions bilateral;
   void validate() const;
 };
-
-/// Preset names: "cad" (CAD parts and scans of them: sharp creases kept), "smooth" (organic
-/// shapes: the edge field is effectively off). "auto" is resolved per mesh by choose_preset().
-/// Values and how they were measured: docs/presets.md.
-std::vector<std::string> preset_names();
-
-/// Options of a named preset ("cad" or "smooth"); throws InvalidInput for other names.
-DenoiseOptions preset_options(const std::string& name);
-
-/// What choose_preset() saw.
-struct PresetChoice {
-  std::string preset;          ///< "cad" or "smooth"
-  double sharp_fraction = 0;   ///< fraction of edge length with dihedral > 30° after pre-smoothing
-  double flat_fraction = 0;    ///< fraction of edge length with dihedral < 1° after pre-smoothing
-  double noise_level = 0;      ///< mean angle (radians) between input and pre-smoothed normals
-};
-
-/// Picks "cad" or "smooth" for a mesh from the mesh itself (see docs/presets.md).
-PresetChoice choose_preset(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F);
 
 struct DenoiseResult {
   Eigen::MatrixXd V;        ///< #V by 3 denoised positions (F unchanged)
@@ -70,14 +46,5 @@ double denoise_memory_estimate(Eigen::Index num_vertices, Eigen::Index num_faces
 /// orientation. Throws InvalidInput, SolverError or Cancelled.
 DenoiseResult denoise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const DenoiseOptions& options = {},
                       const ProgressCallback& progress = {});
-
-/// Bilateral normal filtering (Zheng et al. 2011): #F by 3 filtered normals.
-Eigen::MatrixXd bilateral_filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
-                                         const BilateralOptions& options, const ProgressCallback& progress = {});
-
-/// The classic iterative vertex update (Sun et al. 2007; Zheng et al. 2011): moves each vertex
-/// towards the planes of its faces' target normals N (#F by 3).
-Eigen::MatrixXd classic_vertex_update(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
-                                      int iterations, const ProgressCallback& progress = {});
 
 }  // namespace msmesh

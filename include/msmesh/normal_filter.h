@@ -15,13 +15,15 @@
 
 namespace msmesh {
 
+/// Options of Algorithm 1. The defaults are those of preset "cad" (presets.h); ranges and help
+/// in normal_filter_parameters() (parameters.h).
 struct NormalFilterOptions {
-  double alpha = 2.0;     ///< α > 0, fidelity to the input normals (eq. 15)
+  double alpha = 2.5;     ///< α > 0, fidelity to the input normals (eq. 15)
   double beta = 0.02;     ///< β > 0, weight of the Ambrosio–Tortorelli edge term
   double gamma = 2.0;     ///< γ > 0, weight of the (non)convex normal-variation term
   double epsilon = 1e-3;  ///< ε > 0, phase-field width (§5.1)
-  double rho = 0.1;       ///< ρ > 0, non-convexity of φ₂ (0.9 CAD, 0.1 organic; §5.1)
-  double penalty = 1.0;   ///< r_p > 0, ADMM penalty (§5.1)
+  double rho = 0.1;       ///< ρ > 0, non-convexity of φ₂ (§5.1 suggests 0.9 for CAD, 0.1 organic; measured: docs/presets.md)
+  double penalty = 2.0;   ///< r_p > 0, ADMM penalty (§5.1)
   double relaxation = 1.618;  ///< ν in (0, (1+√5)/2), multiplier step (§5.1)
   int max_iterations = 30;    ///< k ≥ 1 (§5.1)
   double tolerance = 1e-6;    ///< ε₁: stop when ‖N^{k+1} − N^k‖_U < ε₁ (§5.1)

@@ -14,16 +14,15 @@
 
 #include "msmesh/multicut.h"
 #include "msmesh/normal_filter.h"
+#include "msmesh/presets.h"
 #include "msmesh/progress.h"
 
 namespace msmesh {
 
-/// The normal filter options segment() uses by default: those of preset "cad" (denoise.h).
-NormalFilterOptions default_segment_normal_options();
-
 struct SegmentOptions {
-  /// Algorithm 1 parameters for the regularised normals and v. Default: preset "cad".
-  NormalFilterOptions normals = default_segment_normal_options();
+  /// Algorithm 1 parameters for the regularised normals and v. Default: preset "cad"
+  /// (segment_normal_options(), presets.h).
+  NormalFilterOptions normals = segment_normal_options();
   /// Faces whose regularised normals are within this angle (degrees, in (0, 180)) are never
   /// split: their split probability is clamp_probability (§6.3). Default 15.
   double smooth_angle_deg = 15.0;

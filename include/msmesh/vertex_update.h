@@ -13,9 +13,11 @@
 
 namespace msmesh {
 
+/// Options of Algorithm 2. The defaults are those of preset "cad" (presets.h); ranges and help
+/// in vertex_update_parameters() (parameters.h).
 struct VertexUpdateOptions {
   double omega1 = 1.0;   ///< ω₁ > 0, normal matching (fixed to 1 in the paper)
-  double omega2 = 0.1;   ///< ω₂ ≥ 0, fairness across edges weighted by v² (paper range [0.001, 0.1])
+  double omega2 = 0.03;  ///< ω₂ ≥ 0, fairness across edges weighted by v² (paper range [0.001, 0.1])
   double omega3 = 0.1;   ///< ω₃ > 0, closeness to the input positions (paper range [0.001, 0.1])
   int max_iterations = 30;   ///< k ≥ 1
   double tolerance = 1e-6;   ///< ε₂: stop when the RMS vertex move (mean-edge units) < ε₂

@@ -19,6 +19,7 @@
 #include <utility>
 
 #include "msmesh/denoise.h"
+#include "msmesh/presets.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/mesh.h"

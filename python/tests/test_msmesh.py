@@ -357,7 +357,7 @@ def test_segment_and_feature_lines():
     assert lines and all(line.dtype == np.int32 and line.size >= 2 for line in lines)
     assert len(msmesh.feature_lines(V, F)) == len(lines)  # v from filter_normals, as the CLI
     assert msmesh.rand_index(labels, labels) == 1.0
-    with pytest.raises(ValueError, match="smooth_angle_deg"):
+    with pytest.raises(ValueError, match="angle = 200"):
         msmesh.segment(V, F, angle=200.0)
     with pytest.raises(msmesh.Cancelled):
         msmesh.segment(V, F, progress=lambda e: False)
