@@ -52,44 +52,47 @@ __all__ = [
 ]
 
 _METHODS = {"nmstv": DenoiseMethod.NMSTV, "mstv": DenoiseMethod.MSTV, "bilateral": DenoiseMethod.Bilateral}
-_PRESETS = ("cad", "smooth", "auto")
+_PRESETS = ("auto",) + tuple(_core.preset_names())
+DEFAULT_PRESET = _core.default_preset()  # "auto", as `msmesh denoise`
 
-# Keyword parameters, named like the CLI's options (`msmesh denoise --help`, with '-' -> '_'):
-# name -> (kind, [attribute path in DenoiseOptions, ...]). As in the CLI, vertex_iterations
-# sets both the NMSTV/MSTV vertex update and the bilateral one.
-PARAMETERS = {
-    "alpha": (float, [("normals", "alpha")]),
-    "beta": (float, [("normals", "beta")]),
-    "gamma": (float, [("normals", "gamma")]),
-    "rho": (float, [("normals", "rho")]),
-    "epsilon": (float, [("normals", "epsilon")]),
-    "penalty": (float, [("normals", "penalty")]),
-    "nu": (float, [("normals", "relaxation")]),
-    "v0": (float, [("normals", "v_initial")]),
-    "normal_iterations": (int, [("normals", "max_iterations")]),
-    "vertex_iterations": (int, [("vertices", "max_iterations"), ("bilateral", "vertex_iterations")]),
-    "omega1": (float, [("vertices", "omega1")]),
-    "omega2": (float, [("vertices", "omega2")]),
-    "omega3": (float, [("vertices", "omega3")]),
-    "sigma_r": (float, [("bilateral", "sigma_r")]),
-    "sigma_s": (float, [("bilateral", "sigma_s")]),
-    "bilateral_iterations": (int, [("bilateral", "normal_iterations")]),
-    "solver": (LinearSolver, [("normals", "solver"), ("vertices", "solver")]),
-    "solver_tolerance": (float, [("normals", "solver_tolerance"), ("vertices", "solver_tolerance")]),
-}
+
+def _table(kind):
+    """A parameter table of the library (msmesh/parameters.h) as {python name: entry}: each
+    entry a dict with option (the CLI spelling), symbol, unit, type, range, help, group and
+    defaults (preset or '' -> value)."""
+    return {p["name"]: p for p in _core.parameter_table(kind)}
+
+
+# Keyword parameters: the library's tables, named like the CLI's options with '-' -> '_'
+# (`msmesh denoise --help`, `msmesh params`), plus the solver choice. As in the CLI,
+# vertex_iterations sets both the NMSTV/MSTV vertex update and the bilateral one, and
+# solver_tolerance both solvers.
+PARAMETERS = _table("denoise")
+_NORMAL_PARAMETERS = _table("normal_filter")
+_VERTEX_PARAMETERS = _table("vertex_update")
 _SOLVERS = {"auto": LinearSolver.Auto, "cholesky": LinearSolver.Cholesky, "cg": LinearSolver.CG}
-_NORMAL_PARAMETERS = {k: PARAMETERS[k] for k in
-                      ("alpha", "beta", "gamma", "rho", "epsilon", "penalty", "nu", "v0", "normal_iterations")}
-_NORMAL_PARAMETERS["solver"] = (LinearSolver, [("normals", "solver")])
-_NORMAL_PARAMETERS["solver_tolerance"] = (float, [("normals", "solver_tolerance")])
-_VERTEX_PARAMETERS = {"omega1": PARAMETERS["omega1"], "omega2": PARAMETERS["omega2"],
-                      "omega3": PARAMETERS["omega3"], "vertex_iterations": (int, [("vertices", "max_iterations")]),
-                      "solver": (LinearSolver, [("vertices", "solver")]),
-                      "solver_tolerance": (float, [("vertices", "solver_tolerance")])}
+_SOLVER_PARAMETER = {"name": "solver", "type": "choice", "range": "auto, cholesky or cg",
+                     "help": "linear solver of the fixed systems", "defaults": {"": "auto"}}
+
+
+def _parameter_doc(table, indent="        "):
+    """One line per parameter for a docstring: name (symbol; range; default): help."""
+    lines = []
+    for name, p in table.items():
+        d = p["defaults"]
+        values = sorted(set(d.values()), key=str)
+        if p["type"] == "bool":
+            shown = "/".join(("True" if v else "False") for v in values)
+        else:
+            shown = ", ".join(f"{k} {v:g}" for k, v in d.items()) if len(values) > 1 else f"{values[0]:g}"
+        symbol = p.get("symbol") or ""
+        lines.append(f"{indent}{name}{' (' + symbol + ')' if symbol else ''}: {p['help']}; "
+                     f"{p['range']}{' ' + p['unit'] if p.get('unit') else ''}; default {shown}")
+    return "\n".join(lines)
 
 
 def preset_names():
-    """Preset names accepted by denoise(): cad, smooth, auto."""
+    """Preset names accepted by denoise(): auto (the default: chosen from the mesh), cad, smooth."""
     return list(_PRESETS)
 
 
@@ -114,67 +117,54 @@ def threads():
     return _core.threads()
 
 
-def _apply_parameters(options, params, table, function):
-    """Sets keyword parameters on an options object following `table` (name -> (kind,
-    [attribute path, ...])). Unknown names are a TypeError (as for any Python function), bad
-    values an InvalidInputError; ranges are checked by the library's validate()."""
+def _apply_parameters(options, params, table, function, solvers=()):
+    """Sets keyword parameters on an options object through the library's table (`table`, from
+    _table()). Unknown names are a TypeError (as for any Python function); a value of the wrong
+    type, out of range, not whole (int) or not a bool is an InvalidInputError naming it.
+    `solvers`: the option sets ('normals', 'vertices') that 'solver' sets, if accepted."""
     for name, value in params.items():
-        if name not in table:
-            raise TypeError(f"{function}() got an unexpected keyword argument '{name}'; "
-                            f"parameters: {', '.join(table)}")
-        kind, targets = table[name]
-        if kind is LinearSolver:
+        if name == "solver" and solvers:
             value = _SOLVERS[_checks.choice(value, name, tuple(_SOLVERS))]
-        elif kind is int:
+            for attribute in solvers:
+                setattr(getattr(options, attribute) if attribute else options, "solver", value)
+            continue
+        if name not in table:
+            valid = list(table) + (["solver"] if solvers else [])
+            raise TypeError(f"{function}() got an unexpected keyword argument '{name}'; "
+                            f"parameters: {', '.join(valid)}")
+        kind = table[name]["type"]
+        if kind == "int":
             value = _checks.integer(value, name)
-        elif kind is bool:
+        elif kind == "bool":
             value = _checks.boolean(value, name)
         else:
             value = _checks.real(value, name)
-        for path in targets:
-            owner = options
-            for attribute in path[:-1]:
-                owner = getattr(owner, attribute)
-            setattr(owner, path[-1], value)
-
-
-def _options_dict(options):
-    n, v, b = options.normals, options.vertices, options.bilateral
-    if options.method == DenoiseMethod.Bilateral:
-        return {"sigma_r": b.sigma_r, "sigma_s": b.sigma_s, "bilateral_iterations": b.normal_iterations,
-                "vertex_iterations": b.vertex_iterations}
-    return dict(_normal_options_dict(n), omega1=v.omega1, omega2=v.omega2, omega3=v.omega3,
-                vertex_iterations=v.max_iterations, vertex_tolerance=v.tolerance)
-
-
-def _normal_options_dict(n):
-    return {"alpha": n.alpha, "beta": n.beta, "gamma": n.gamma, "rho": n.rho, "epsilon": n.epsilon,
-            "penalty": n.penalty, "nu": n.relaxation, "v0": n.v_initial, "normal_iterations": n.max_iterations,
-            "normal_tolerance": n.tolerance}
+        _core.set_parameter(options, name, float(value))
 
 
 def _resolve_preset(V, F, preset, report):
-    """DenoiseOptions of a preset name; 'auto' is chosen from the mesh (recorded in report)."""
+    """DenoiseOptions of a preset name; 'auto' is chosen from the mesh by the library (what it
+    saw and why recorded in report)."""
     _checks.choice(preset, "preset", _PRESETS)
+    r = _core.resolve_preset(preset, V, F)
     report["preset_requested"] = preset
-    if preset == "auto":
-        c = _core.choose_preset(V, F)
-        preset = c["preset"]
-        report["auto_sharp_fraction"] = c["sharp_fraction"]
-        report["auto_flat_fraction"] = c["flat_fraction"]
-        report["auto_noise_level"] = c["noise_level"]
-    report["preset"] = preset
-    return _core.preset_options(preset)
+    report["preset"] = r["preset"]
+    report["preset_reason"] = r["reason"]
+    if r["automatic"]:
+        report["auto_sharp_fraction"] = r["sharp_fraction"]
+        report["auto_flat_fraction"] = r["flat_fraction"]
+        report["auto_noise_level"] = r["noise_level"]
+    return r["options"]
 
 
 def choose_preset(V, F):
     """The preset 'auto' picks for a mesh: dict(preset, sharp_fraction, flat_fraction,
-    noise_level)."""
+    noise_level, reason)."""
     V, F = _checks.mesh(V, F)
     return _core.choose_preset(V, F)
 
 
-def denoise(V, F, preset="cad", method="nmstv", progress=None, **params):
+def denoise(V, F, preset=DEFAULT_PRESET, method="nmstv", progress=None, **params):
     """Denoises a mesh: normal filtering, then vertex updating (F is unchanged).
 
     V: (#V, 3) positions; F: (#F, 3) triangle indices.
@@ -182,9 +172,9 @@ def denoise(V, F, preset="cad", method="nmstv", progress=None, **params):
         mesh, as `msmesh denoise --preset auto`).
     method: 'nmstv' (the paper), 'mstv' (all IRLA weights 1) or 'bilateral' (Zheng et al. 2011).
     progress: None or a callable(ProgressEvent) -> False to cancel.
-    params: overrides of the preset, named like the CLI's options: alpha, beta, gamma, rho,
-        epsilon, penalty, nu, v0, normal_iterations, vertex_iterations, omega1, omega2, omega3,
-        sigma_r, sigma_s, bilateral_iterations (see PARAMETERS).
+    params: overrides of the preset, named like the CLI's options (PARAMETERS; `msmesh params`
+        prints the values a preset gives), and solver ('auto', 'cholesky', 'cg'):
+{parameters}
 
     Returns (V_new, report): V_new (#V, 3); report a dict with the filtered 'normals' (#F, 3),
     the edge field 'v' (#E, None for bilateral) on 'edges' (#E, 2), 'preset' (the one used),
@@ -197,11 +187,11 @@ def denoise(V, F, preset="cad", method="nmstv", progress=None, **params):
     report = {}
     options = _resolve_preset(V, F, preset, report)
     options.method = _METHODS[method]
-    _apply_parameters(options, params, PARAMETERS, "denoise")
+    _apply_parameters(options, params, PARAMETERS, "denoise", solvers=("normals", "vertices"))
     result = _core.denoise(V, F, options, progress)
     V_new = result.pop("V")
     report["method"] = method
-    report["parameters"] = _options_dict(options)
+    report["parameters"] = _core.parameters(options)
     report.update(result)
     report["seconds_total"] = report["seconds_normals"] + report["seconds_vertices"]
     return V_new, report
@@ -210,10 +200,12 @@ def denoise(V, F, preset="cad", method="nmstv", progress=None, **params):
 def filter_normals(V, F, preset=None, method="nmstv", normals0=None, progress=None, **params):
     """Algorithm 1 alone: filters the face normals of a mesh.
 
-    preset: None (the library defaults of NormalFilterOptions), 'cad', 'smooth' or 'auto'.
+    preset: None (the library defaults of NormalFilterOptions: preset 'cad'), 'cad', 'smooth'
+        or 'auto'.
     method: 'nmstv' (IRLA reweighting) or 'mstv' (all weights 1).
     normals0: (#F, 3) input normals N0; None = the face normals of V.
-    params: alpha, beta, gamma, rho, epsilon, penalty, nu, v0, normal_iterations.
+    params: overrides, and solver ('auto', 'cholesky', 'cg'):
+{parameters}
 
     Returns (N, v, report): N (#F, 3) unit normals, v (#E) the edge field (about 0 on features,
     1 elsewhere) on the edges report['edges'] (#E, 2); report has iterations, convergence,
@@ -227,13 +219,13 @@ def filter_normals(V, F, preset=None, method="nmstv", normals0=None, progress=No
         raise InvalidInputError(f"normals0: must have one row per face ({F.shape[0]}), got {N0.shape[0]}")
     report = {}
     options = DenoiseOptions() if preset is None else _resolve_preset(V, F, preset, report)
-    _apply_parameters(options, params, _NORMAL_PARAMETERS, "filter_normals")
     normal_options = options.normals
+    _apply_parameters(normal_options, params, _NORMAL_PARAMETERS, "filter_normals", solvers=("",))
     normal_options.reweight = method == "nmstv"
     result = _core.filter_normals(V, F, normal_options, N0, progress)
     N, v = result.pop("normals"), result.pop("v")
     report["method"] = method
-    report["parameters"] = _normal_options_dict(normal_options)
+    report["parameters"] = _core.parameters(normal_options)
     report.update(result)
     return N, v, report
 
@@ -243,8 +235,10 @@ def update_vertices(V, F, N, v=None, preset=None, progress=None, **params):
 
     N: (#F, 3) target unit normals; v: None (all ones) or the (#E,) edge field of
     filter_normals (values are used as given; denoise() clips them to [0, 1]).
-    preset: None (the library defaults of VertexUpdateOptions), 'cad', 'smooth' or 'auto'.
-    params: omega1, omega2, omega3, vertex_iterations.
+    preset: None (the library defaults of VertexUpdateOptions: preset 'cad'), 'cad', 'smooth'
+        or 'auto'.
+    params: overrides, and solver ('auto', 'cholesky', 'cg'):
+{parameters}
 
     Returns (V_new, report): report has iterations, convergence, change history and seconds.
     """
@@ -256,14 +250,18 @@ def update_vertices(V, F, N, v=None, preset=None, progress=None, **params):
     v = np.zeros(0) if v is None else _checks.real_vector(v, "v")
     report = {}
     options = DenoiseOptions() if preset is None else _resolve_preset(V, F, preset, report)
-    _apply_parameters(options, params, _VERTEX_PARAMETERS, "update_vertices")
-    result = _core.update_vertices(V, F, N, v, options.vertices, progress)
+    vertex_options = options.vertices
+    _apply_parameters(vertex_options, params, _VERTEX_PARAMETERS, "update_vertices", solvers=("",))
+    result = _core.update_vertices(V, F, N, v, vertex_options, progress)
     V_new = result.pop("V")
-    o = options.vertices
-    report["parameters"] = {"omega1": o.omega1, "omega2": o.omega2, "omega3": o.omega3,
-                            "vertex_iterations": o.max_iterations, "vertex_tolerance": o.tolerance}
+    report["parameters"] = _core.parameters(vertex_options)
     report.update(result)
     return V_new, report
+
+
+for _function, _parameters in ((denoise, PARAMETERS), (filter_normals, _NORMAL_PARAMETERS),
+                               (update_vertices, _VERTEX_PARAMETERS)):
+    _function.__doc__ = _function.__doc__.replace("{parameters}", _parameter_doc(_parameters))
 
 
 def add_noise(V, F, sigma=0.2, direction="normal", impulsive=0.0, seed=0):
@@ -348,13 +346,10 @@ def make_shape(name, resolution):
 if hasattr(_core, "segment"):
     from ._core import MulticutOptions, SegmentOptions
 
-    # Keyword parameters of segment(): the normal filtering ones of filter_normals() plus the
-    # multicut's local search; the options of `msmesh segment` are named arguments.
-    SEGMENT_PARAMETERS = dict(
-        _NORMAL_PARAMETERS,
-        local_search=(bool, [("multicut", "local_search")]),
-        max_local_rounds=(int, [("multicut", "max_local_rounds")]),
-    )
+    # Keyword parameters of segment(): the library's table (the segmentation's own and the
+    # normal filter's, as the options of `msmesh segment`) plus the multicut's local search.
+    SEGMENT_PARAMETERS = _table("segment")
+    _MULTICUT_PARAMETERS = {"local_search": bool, "max_local_rounds": int}
 
     def _denoise_first(V, F, preset, progress, report):
         """The positions `--denoise` of `msmesh segment` / `features` segments: denoise() with
@@ -364,19 +359,16 @@ if hasattr(_core, "segment"):
         report["V_denoised"] = V
         return V
 
-    def segment(V, F, preset="cad", denoise=False, angle=15.0, clamp=0.001, min_area=None, progress=None,
+    def segment(V, F, preset="cad", denoise=False, progress=None, local_search=True, max_local_rounds=50,
                 **params):
         """Segments a mesh into piecewise-smooth parts (paper 6.3), as `msmesh segment`:
         Algorithm 1 gives the edge field v, a multicut of the face graph gives the segments.
 
         preset: 'cad' or 'smooth', the normal filtering parameters (as `--preset`).
         denoise: denoise with the preset first and segment the result (`--denoise`).
-        angle: faces whose regularised normals are within this many degrees never split (`--angle`).
-        clamp: split probabilities are clamped to [clamp, 1 - clamp] (`--clamp`).
-        min_area: merge segments smaller than this fraction of the area; None = the library
-            default (`--min-area`).
-        params: overrides of the normal filtering parameters (alpha, ..., normal_iterations)
-            and local_search (True), max_local_rounds (50) of the multicut.
+        local_search, max_local_rounds: the multicut's local search (on, 50 rounds).
+        params: named like the options of `msmesh segment` (SEGMENT_PARAMETERS):
+{parameters}
 
         Returns (labels, report): labels (#F,) int32 in [0, count), segment 0 the largest;
         report has count, areas, objective, multicut_count, normals, v, v_normalized,
@@ -384,16 +376,14 @@ if hasattr(_core, "segment"):
         denoise=True.
         """
         V, F = _checks.mesh(V, F)
-        _checks.choice(preset, "preset", ("cad", "smooth"))
+        _checks.choice(preset, "preset", tuple(_core.preset_names()))
         denoise = _checks.boolean(denoise, "denoise")
         progress = _checks.progress(progress)
         options = SegmentOptions()
         options.normals = _core.preset_options(preset).normals
-        options.smooth_angle_deg = _checks.real(angle, "angle")
-        options.clamp_probability = _checks.real(clamp, "clamp")
-        if min_area is not None:
-            options.min_area_fraction = _checks.real(min_area, "min_area")
         _apply_parameters(options, params, SEGMENT_PARAMETERS, "segment")
+        options.multicut.local_search = _checks.boolean(local_search, "local_search")
+        options.multicut.max_local_rounds = _checks.integer(max_local_rounds, "max_local_rounds", minimum=0)
         options.validate()  # before a denoise=True spends time
         report = {}
         if denoise:
@@ -401,11 +391,11 @@ if hasattr(_core, "segment"):
         report.update(_core.segment(V, F, options, progress))
         labels = report.pop("labels")
         report["preset"] = preset
-        report["parameters"] = dict(_normal_options_dict(options.normals), angle=options.smooth_angle_deg,
-                                    clamp=options.clamp_probability, min_area=options.min_area_fraction,
-                                    local_search=options.multicut.local_search,
+        report["parameters"] = dict(_core.parameters(options), local_search=options.multicut.local_search,
                                     max_local_rounds=options.multicut.max_local_rounds)
         return labels, report
+
+    segment.__doc__ = segment.__doc__.replace("{parameters}", _parameter_doc(SEGMENT_PARAMETERS, " " * 12))
 
     def feature_lines(V, F, v=None, threshold=0.5, min_edges=1, preset="cad", denoise=False, progress=None):
         """Feature lines: chains of the edges whose normalised edge field is below `threshold`
@@ -420,7 +410,7 @@ if hasattr(_core, "segment"):
         threshold = _checks.real(threshold, "threshold")
         min_edges = _checks.integer(min_edges, "min_edges", minimum=0)
         if v is None:
-            _checks.choice(preset, "preset", ("cad", "smooth"))
+            _checks.choice(preset, "preset", tuple(_core.preset_names()))
             progress = _checks.progress(progress)
             if _checks.boolean(denoise, "denoise"):
                 V = _denoise_first(V, F, preset, progress, {})
@@ -441,23 +431,9 @@ if hasattr(_core, "segment"):
 if hasattr(_core, "inpaint"):
     from ._core import InpaintOptions
 
-    # Tuning parameters, named like the options of `msmesh inpaint`.
-    INPAINT_PARAMETERS = {
-        "alpha": (float, [("normals", "alpha")]),
-        "beta": (float, [("normals", "beta")]),
-        "gamma": (float, [("normals", "gamma")]),
-        "rho": (float, [("normals", "rho")]),
-        "normal_iterations": (int, [("normals", "max_iterations")]),
-        "omega2": (float, [("vertices", "omega2")]),
-        "omega3": (float, [("vertices", "omega3")]),
-        "vertex_iterations": (int, [("vertices", "max_iterations")]),
-        "outside_alpha": (float, [("outside_alpha",)]),
-        "inside_alpha": (float, [("inside_alpha",)]),
-        "inside_beta": (float, [("inside_beta",)]),
-        "inside_omega3": (float, [("inside_omega3",)]),
-        "rounds": (int, [("rounds",)]),
-        "context_rings": (int, [("context_rings",)]),
-    }
+    # Every number and switch of InpaintOptions, named like the options of `msmesh inpaint`
+    # (the library's table); holes= is the list of hole indices.
+    INPAINT_PARAMETERS = _table("inpaint")
 
     def find_holes(V, F):
         """The boundary loops of a mesh: a list of dicts (loop: vertex indices, edges,
@@ -465,36 +441,31 @@ if hasattr(_core, "inpaint"):
         V, F = _checks.mesh(V, F)
         return _core.find_holes(V, F)
 
-    def inpaint(V, F, holes=None, max_hole_edges=0, max_hole_diameter=0.0, fill_outer=False,
-                recover_features=True, free_ring=0, progress=None, **params):
+    def inpaint(V, F, holes=None, progress=None, **params):
         """Fills the holes of a mesh and recovers their sharp features (paper 6.2), like
         `msmesh inpaint`.
 
         holes: None (every hole within the limits, outer boundaries excepted) or indices into
-            find_holes(); max_hole_edges, max_hole_diameter (mean edge lengths): 0 = no limit;
-        fill_outer: also fill outer boundaries; recover_features: False = CGAL fill-and-fair
-            only; free_ring: rings of input vertices around each hole that may move.
-        params: alpha, beta, gamma, rho, normal_iterations, omega2, omega3, vertex_iterations,
-            outside_alpha, inside_alpha, inside_beta, inside_omega3, rounds, context_rings.
+            find_holes().
+        params: named like the options of `msmesh inpaint` (INPAINT_PARAMETERS):
+{parameters}
 
         Returns (V_new, F_new, report): input vertices and faces first, then the new ones;
         report has new_faces / new_vertices (bool arrays), holes (one dict per hole with its
-        action 'filled'/'skipped'/'failed' and reason), filled/skipped/failed counts, iteration
-        counts and seconds.
+        action 'filled'/'skipped'/'failed' and reason), filled/skipped/failed counts, the
+        parameters, iteration counts and seconds.
         """
         V, F = _checks.mesh(V, F)
         progress = _checks.progress(progress)
         options = InpaintOptions()
         if holes is not None:
             options.holes = [_checks.integer(h, "holes", minimum=0) for h in np.asarray(holes).ravel().tolist()]
-        options.max_hole_edges = _checks.integer(max_hole_edges, "max_hole_edges", minimum=0)
-        options.max_hole_diameter = _checks.real(max_hole_diameter, "max_hole_diameter", minimum=0.0)
-        options.fill_outer_boundary = _checks.boolean(fill_outer, "fill_outer")
-        options.recover_features = _checks.boolean(recover_features, "recover_features")
-        options.free_ring = _checks.integer(free_ring, "free_ring", minimum=0)
         _apply_parameters(options, params, INPAINT_PARAMETERS, "inpaint")
         report = _core.inpaint(V, F, options, progress)
+        report["parameters"] = _core.parameters(options)
         return report.pop("V"), report.pop("F"), report
+
+    inpaint.__doc__ = inpaint.__doc__.replace("{parameters}", _parameter_doc(INPAINT_PARAMETERS, " " * 12))
 
     def inpaint_errors(V_input, F_input, V_result, F_result, V_truth, F_truth, new_faces=None):
         """Error figures of an inpainting result against a ground truth (distances relative
