@@ -169,7 +169,7 @@ const Registrar reg("compare", 95, [](CLI::App& app) {
       ->capture_default_str();
   c->add_option("--error-max", a->error_max, "Top of the error colour scale in degrees (default: automatic)");
   c->add_option("--supersample", a->supersample, "Samples per pixel along each axis (1-4)")->capture_default_str();
-  c->add_flag("-q,--quiet", a->quiet, "Print nothing");
+  add_quiet_flag(c, a->quiet);
   c->callback([a]() { run(*a); });
 });
 

@@ -132,17 +132,19 @@ void run(const Args& a) {
     std::cout << j.str() << "\n";
     return;
   }
-  std::cout << "denoised " << a.input << " -> " << a.output << " (" << mesh.V.rows() << " vertices, "
-            << mesh.F.rows() << " faces)\n";
+  if (!a.quiet)
+    std::cout << "denoised " << a.input << " -> " << a.output << " (" << mesh.V.rows() << " vertices, "
+              << mesh.F.rows() << " faces)\n";
   if (notes.dropped_degenerate > 0)
     std::cout << "  note: " << notes.dropped_degenerate << " face(s) repeating a vertex were dropped on reading\n";
   for (const std::string& line : repairs) std::cout << "  repair: " << line << "\n";
   if (notes.uv_dropped)
     std::cout << "  note: the input's texture coordinates have seams (not per-vertex) and were not carried over\n";
+  if (a.quiet) return;  // notes of what was dropped or repaired print even then
   std::cout << "  method " << a.method;
   if (o.method != DenoiseMethod::Bilateral) {
     std::cout << ", preset " << preset.preset;
-    if (preset.automatic) std::cout << " (" << preset.reason() << ")";
+    if (preset.automatic) std::cout << ", " << preset.reason();
   }
   std::cout << "\n";
   if (o.method != DenoiseMethod::Bilateral) {
@@ -201,7 +203,7 @@ const Registrar reg("denoise", 50, [](CLI::App& app) {
       ->capture_default_str()
       ->group("Performance");
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
-  c->add_flag("-q,--quiet", a->quiet, "No progress bar");
+  add_quiet_flag(c, a->quiet);
   c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");
   c->add_flag("--in-place", a->in_place, "Allow the output to overwrite the input file");
   c->add_flag("--repair", a->repair,

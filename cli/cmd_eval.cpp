@@ -14,7 +14,7 @@ namespace {
 
 struct Args {
   std::string result, truth;
-  bool json = false;
+  bool json = false, quiet = false;
 };
 
 void run(const Args& a) {
@@ -56,6 +56,7 @@ void run(const Args& a) {
     return;
   }
 
+  if (a.quiet) return;
   std::cout << "eval: " << a.result << " (" << result.F.rows() << " faces) against " << a.truth << " ("
             << truth.F.rows() << " faces)\n";
   if (dropped_result || dropped_truth)
@@ -81,6 +82,7 @@ const Registrar reg("eval", 40, [](CLI::App& app) {
   c->add_option("result", a->result, "Result mesh (obj, off, ply, stl)")->required();
   c->add_option("--truth", a->truth, "Ground-truth mesh")->required();
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
+  add_quiet_flag(c, a->quiet);
   c->callback([a]() { run(*a); });
 });
 

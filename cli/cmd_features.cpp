@@ -52,6 +52,7 @@ void run(const Args& a) {
     std::cout << j.str() << "\n";
     return;
   }
+  if (a.quiet) return;
   std::cout << "feature lines of " << a.input << " -> " << a.output << (a.denoise_first ? " (denoised first)" : "")
             << "\n";
   std::cout << "  " << lines.size() << " polylines (" << closed << " closed), " << edges << " edges, length "
@@ -71,7 +72,7 @@ const Registrar reg("features", 75, [](CLI::App& app) {
       ->check(CLI::IsMember({"cad", "smooth"}))
       ->capture_default_str();
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
-  c->add_flag("-q,--quiet", a->quiet, "No progress bar");
+  add_quiet_flag(c, a->quiet);
   c->add_flag("--in-place", a->in_place, "Allow the output to overwrite the input file");
   c->callback([a]() { run(*a); });
 });

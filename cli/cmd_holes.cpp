@@ -17,7 +17,7 @@ struct Args {
   int count = 3;
   double radius = 3;
   long long seed = 1;
-  bool on_features = false, json = false, ascii = false, in_place = false;
+  bool on_features = false, json = false, ascii = false, in_place = false, quiet = false;
 };
 
 void run(const Args& a) {
@@ -57,6 +57,7 @@ void run(const Args& a) {
     std::cout << j.str() << "\n";
     return;
   }
+  if (a.quiet) return;
   std::cout << "punched " << r.punched << " of " << a.count << " holes (radius " << fmt(a.radius)
             << " mean edge lengths" << (a.on_features ? ", on sharp features" : "") << ", seed " << a.seed << "): "
             << a.input << " -> " << a.output << "\n";
@@ -80,6 +81,7 @@ const Registrar reg("holes", 85, [](CLI::App& app) {
   c->add_flag("--on-features", a->on_features, "Centre the holes on sharp edges and corners (dihedral > 60 deg)");
   c->add_option("--map", a->map, "Write the input index of each output vertex to this text file");
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
+  add_quiet_flag(c, a->quiet);
   c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");
   c->add_flag("--in-place", a->in_place, "Allow the output to overwrite the input file");
   c->callback([a]() { run(*a); });

@@ -16,7 +16,7 @@ namespace {
 
 struct Args {
   std::string input;
-  bool json = false;
+  bool json = false, quiet = false;
 };
 
 /// How many of the largest boundary loops to list.
@@ -76,6 +76,7 @@ void run(const Args& a) {
     for (std::size_t i = 0; i < shown; ++i) loops += (i ? ", " : "") + std::to_string(loop_sizes[i]);
     loops += " edges)";
   }
+  if (a.quiet) return;
   std::cout << a.input << "\n"
             << "  vertices:                      " << mesh.V.rows() << "\n"
             << "  faces:                         " << mesh.F.rows() << "\n"
@@ -103,6 +104,7 @@ const Registrar reg("info", 10, [](CLI::App& app) {
   CLI::App* c = app.add_subcommand("info", "Counts, defects (boundaries, non-manifold parts) and size of a mesh");
   c->add_option("input", a->input, "Mesh file (obj, off, ply, stl)")->required();
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
+  add_quiet_flag(c, a->quiet);
   c->callback([a]() { run(*a); });
 });
 

@@ -149,12 +149,13 @@ void run(const Args& a) {
     return;
   }
 
+  if (a.quiet) return;
   if (r.holes.empty()) {
     std::cout << a.input << " has no holes: " << a.output << " is the input mesh unchanged ("
               << mesh.V.rows() << " vertices, " << mesh.F.rows() << " faces)\n";
     return;
   }
-  if (!a.quiet) {
+  {
     for (size_t i = 0; i < r.holes.size(); ++i) {
       const Hole& h = r.holes[i];
       const HoleReport& rep = r.reports[i];
@@ -210,7 +211,7 @@ const Registrar reg("inpaint", 80, [](CLI::App& app) {
       c, inpaint_parameters(), std::vector<std::pair<std::string, InpaintOptions>>{{"", InpaintOptions{}}},
       "(docs/inpainting.md)");
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
-  c->add_flag("-q,--quiet", a->quiet, "No progress bar and no per-hole lines");
+  add_quiet_flag(c, a->quiet);
   c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");
   c->add_flag("--in-place", a->in_place, "Allow the output to overwrite the input file");
   c->callback([a]() { run(*a); });

@@ -14,7 +14,7 @@ namespace {
 struct Args {
   std::string input, output, direction = "normal";
   NoiseOptions options;
-  bool in_place = false, ascii = false;
+  bool in_place = false, ascii = false, quiet = false;
 };
 
 void run(const Args& a) {
@@ -34,6 +34,7 @@ void run(const Args& a) {
   wo.binary = !a.ascii;
   write_mesh(a.output, mesh, wo);
 
+  if (a.quiet) return;
   std::cout << "noise: " << a.input << " -> " << a.output << ": "
             << (o.impulsive_fraction > 0 ? "impulsive (fraction " + fmt(o.impulsive_fraction) + ")" : "Gaussian")
             << ", sigma " << fmt(o.sigma) << " x mean edge " << fmt(l) << " = " << fmt(o.sigma * l) << ", "
@@ -59,6 +60,7 @@ const Registrar reg("noise", 30, [](CLI::App& app) {
   c->add_option("--seed", a->options.seed, "Random seed; the same seed gives the same mesh on any machine")
       ->capture_default_str();
   c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");
+  add_quiet_flag(c, a->quiet);
   c->add_flag("--in-place", a->in_place, "Allow the output to overwrite the input file");
   c->callback([a]() { run(*a); });
 });

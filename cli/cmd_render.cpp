@@ -83,7 +83,7 @@ const Registrar reg("render", 90, [](CLI::App& app) {
   c->add_option("--line-width", a->line_width, "Width of edge lines in pixels (default 2.5 for field and labels, else 1.5)");
   c->add_option("--supersample", a->supersample, "Samples per pixel along each axis (1-4; anti-aliasing)")
       ->capture_default_str();
-  c->add_flag("-q,--quiet", a->quiet, "Print nothing");
+  add_quiet_flag(c, a->quiet);
   c->callback([a]() { run(*a); });
 });
 

@@ -107,7 +107,7 @@ const Registrar reg("repair", 45, [](CLI::App& app) {
               "Remove vertices no face refers to (renumbers the vertices)");
   c->add_flag("--dry-run", a->dry_run, "Only report what would be done; write nothing");
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
-  c->add_flag("-q,--quiet", a->quiet, "Print nothing on success");
+  add_quiet_flag(c, a->quiet);
   c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");
   c->add_flag("--in-place", a->in_place, "Allow the output to overwrite the input file");
   c->callback([a]() { run(*a); });

@@ -128,6 +128,7 @@ void run(const Args& a) {
     std::cout << j.str() << "\n";
     return;
   }
+  if (a.quiet) return;
   std::cout << "segmented " << a.input << " -> " << a.output << " (" << mesh.F.rows() << " faces"
             << (a.denoise_first ? ", denoised first" : "") << ")\n";
   std::cout << "  " << r.count << " segments";
@@ -160,7 +161,7 @@ const Registrar reg("segment", 70, [](CLI::App& app) {
   }
   a->parameters = std::make_unique<ParameterOptions<SegmentOptions>>(c, segment_parameters(), defaults, "");
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
-  c->add_flag("-q,--quiet", a->quiet, "No progress bar");
+  add_quiet_flag(c, a->quiet);
   c->add_flag("--ascii", a->ascii, "Write the PLY as ascii instead of binary");
   c->add_flag("--in-place", a->in_place, "Allow the output to overwrite the input file");
   c->callback([a]() { run(*a); });

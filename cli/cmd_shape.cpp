@@ -14,7 +14,7 @@ namespace {
 struct Args {
   std::string name, output;
   int resolution = 16;
-  bool list = false, ascii = false;
+  bool list = false, ascii = false, quiet = false;
 };
 
 std::string patches(int count) { return std::to_string(count) + (count == 1 ? " smooth patch" : " smooth patches"); }
@@ -35,6 +35,7 @@ void run(const Args& a) {
   WriteOptions wo;
   wo.binary = !a.ascii;
   write_mesh(a.output, mesh, wo);
+  if (a.quiet) return;
   std::cout << "shape: " << a.name << " at resolution " << a.resolution << " -> " << a.output << ": "
             << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces, " << patches(patch_count) << "\n";
 }
@@ -50,6 +51,7 @@ const Registrar reg("shape", 20, [](CLI::App& app) {
       ->capture_default_str();
   c->add_flag("--list", a->list, "List the shape names with their numbers of smooth patches");
   c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");
+  add_quiet_flag(c, a->quiet);
   c->callback([a]() { run(*a); });
 });
 

@@ -33,6 +33,13 @@ void finish_progress_line();
 /// Refuses to write over `output` when it is the same file as `input` unless allowed.
 void check_not_overwriting_input(const std::string& input, const std::string& output, bool allowed);
 
+/// -q,--quiet, the same on every subcommand: no progress bar and no summary. Errors, notes of
+/// what was dropped or repaired in the data, and output asked for with --json still appear.
+inline CLI::Option* add_quiet_flag(CLI::App* c, bool& quiet) {
+  return c->add_flag("-q,--quiet", quiet,
+                     "No progress bar and no summary (errors, notes of dropped or repaired data and --json still print)");
+}
+
 /// Formats a double compactly for summaries.
 std::string fmt(double x, int precision = 4);
 

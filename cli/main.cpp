@@ -4,10 +4,13 @@
 #include <algorithm>
 #include <cstdlib>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "command.h"
 #include "msmesh/errors.h"
 #include "msmesh/threads.h"
+#include "usage_error.h"
 
 namespace {
 
@@ -36,6 +39,75 @@ void restart_with_runtime_settings(char** argv) {
   execv("/proc/self/exe", argv);  // returns only on failure: then carry on as we are
 }
 
+/// Edit distance between two names (insertions, deletions, substitutions, transpositions).
+std::size_t distance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i)
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+
+/// The candidate closest to `typed`, or "" when none is close (at most a third of its length).
+std::string closest(const std::string& typed, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_d = typed.size() / 3 + 1;
+  for (const std::string& c : candidates) {
+    const std::size_t dist = distance(typed, c);
+    if (dist < best_d || (dist == best_d && best.empty() && dist <= 2)) {
+      best = c;
+      best_d = dist;
+    }
+  }
+  return best;
+}
+
+/// "did you mean ...?" for the first unknown subcommand or option on the command line.
+std::string suggestion(CLI::App& app, int argc, char** argv) {
+  CLI::App* sub = nullptr;
+  std::vector<std::string> names;
+  std::vector<CLI::App*> subs = app.get_subcommands([](CLI::App*) { return true; });
+  for (const CLI::App* s : subs) names.push_back(s->get_name());
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (!sub) {
+      if (arg == "--threads") {
+        ++i;
+        continue;
+      }
+      if (!arg.empty() && arg[0] == '-') continue;
+      for (CLI::App* s : subs)
+        if (s->get_name() == arg) sub = s;
+      if (sub) continue;
+      const std::string c = closest(arg, names);
+      return c.empty() ? "" : "unknown subcommand '" + arg + "'; did you mean '" + c + "'?";
+    }
+    if (arg.rfind("--", 0) != 0 || arg == "--") continue;
+    const std::string name = arg.substr(0, arg.find('='));
+    if (sub->get_option_no_throw(name) || app.get_option_no_throw(name)) continue;
+    std::vector<std::string> options;
+    for (const CLI::Option* o : sub->get_options())
+      for (const std::string& l : o->get_lnames()) options.push_back("--" + l);
+    const std::string c = closest(name, options);
+    if (!c.empty()) return "unknown option '" + name + "'; did you mean '" + c + "'?";
+  }
+  return "";
+}
+
+/// Every error is reported as "msmesh: error: ..."; usage errors exit with 2, others with 1.
+int report_error(const std::string& message, int status) {
+  msmesh::cli::finish_progress_line();
+  std::cerr << "msmesh: error: " << message << "\n";
+  return status;
+}
+
+constexpr int kUsageStatus = 2;    // a wrong subcommand, option, value or combination
+constexpr int kFailureStatus = 1;  // the work failed: unreadable input, solver failure, ...
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -59,20 +131,20 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    msmesh::cli::finish_progress_line();
-    return app.exit(e);
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);  // --help, --version
+    std::string message = e.what();
+    const std::string hint = suggestion(app, argc, argv);
+    if (!hint.empty()) message += " (" + hint + ")";
+    return report_error(message + "\nRun 'msmesh --help' or 'msmesh SUBCOMMAND --help' for the options.",
+                        kUsageStatus);
+  } catch (const msmesh::cli::UsageError& e) {
+    return report_error(e.what(), kUsageStatus);
   } catch (const msmesh::Error& e) {
-    msmesh::cli::finish_progress_line();
-    std::cerr << "msmesh: error: " << e.what() << "\n";
-    return 1;
+    return report_error(e.what(), kFailureStatus);
   } catch (const std::bad_alloc&) {
-    msmesh::cli::finish_progress_line();
-    std::cerr << "msmesh: error: out of memory\n";
-    return 1;
+    return report_error("out of memory", kFailureStatus);
   } catch (const std::exception& e) {
-    msmesh::cli::finish_progress_line();
-    std::cerr << "msmesh: error: " << e.what() << "\n";
-    return 1;
+    return report_error(e.what(), kFailureStatus);
   }
   return 0;
 }

@@ -450,7 +450,7 @@ TEST(RenderCli, RenderCompareAndReport) {
   ASSERT_EQ(run(M + "shape fandisk --resolution 4 -o " + q("clean.obj")).status, 0);
   ASSERT_EQ(run(M + "noise " + q("clean.obj") + " -o " + q("noisy.obj") + " --sigma 0.3 --seed 7").status, 0);
   CliRun r = run(M + "denoise " + q("noisy.obj") + " -o " + q("den.obj") + " --truth " + q("clean.obj") +
-                 " --save-field " + q("field.txt") + " --report " + q("report.html") + " -q");
+                 " --save-field " + q("field.txt") + " --report " + q("report.html"));
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("report written to"), std::string::npos) << r.out;
 

@@ -447,7 +447,7 @@ TEST(NothingLost, FailedRunKeepsAnExistingOutput) {
   write_mesh(in, test::grid(4, 0.1));
   write_bytes(out, "previous result");
   const auto run = run_cli("denoise " + in + " -o " + out + " --alpha -1");
-  EXPECT_EQ(run.status, 1);
+  EXPECT_EQ(run.status, 2);  // a usage error
   EXPECT_EQ(read_bytes(out), "previous result");
   EXPECT_EQ(d.entries(), 2u);
 }
@@ -729,7 +729,7 @@ TEST(Limits, ParametersOutOfRangeNameTheValidRange) {
   };
   for (const auto& [args, range] : cases) {
     const auto run = run_cli("denoise " + in + " -o " + out + " " + args);
-    EXPECT_EQ(run.status, 1) << args << ": " << run.out;
+    EXPECT_EQ(run.status, 2) << args << ": " << run.out;  // a usage error
     EXPECT_NE(run.out.find("out of range"), std::string::npos) << args << ": " << run.out;
     EXPECT_NE(run.out.find(range), std::string::npos) << args << ": " << run.out;
     EXPECT_FALSE(fs::exists(out));
