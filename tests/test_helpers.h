@@ -8,6 +8,7 @@
 #include <array>
 #include <atomic>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <random>
 #include <fstream>
@@ -90,6 +91,47 @@ class TempDir {
  private:
   std::filesystem::path path_;
 };
+
+/// A 10×10 grid() with the four middle cells removed: a rim (40 edges) and a hole (8 edges).
+inline Mesh grid_with_hole() {
+  Mesh g = grid(10);
+  std::vector<int> keep;
+  for (int f = 0; f < g.F.rows(); ++f) {
+    const int cell = f / 2, i = cell % 10, j = cell / 10;
+    if ((i == 4 || i == 5) && (j == 4 || j == 5)) continue;
+    keep.push_back(f);
+  }
+  Mesh m;
+  m.V = g.V;
+  m.F.resize(static_cast<Eigen::Index>(keep.size()), 3);
+  for (size_t k = 0; k < keep.size(); ++k) m.F.row(static_cast<Eigen::Index>(k)) = g.F.row(keep[k]);
+  return m;
+}
+
+/// A 6×6 grid() with the two cells (2,2) and (3,3) removed: they share the vertex at grid point
+/// (3,3), so the boundary around them touches itself there.
+inline Mesh grid_with_touching_holes(int* touching) {
+  const int n = 6;
+  Mesh g = grid(n);
+  std::vector<int> keep;
+  for (int f = 0; f < g.F.rows(); ++f) {
+    const int cell = f / 2, i = cell % n, j = cell / n;
+    if ((i == 2 && j == 2) || (i == 3 && j == 3)) continue;
+    keep.push_back(f);
+  }
+  Mesh m;
+  m.V = g.V;
+  m.F.resize(static_cast<Eigen::Index>(keep.size()), 3);
+  for (size_t k = 0; k < keep.size(); ++k) m.F.row(static_cast<Eigen::Index>(k)) = g.F.row(keep[k]);
+  *touching = 3 * (n + 1) + 3;
+  return m;
+}
+
+/// True when a and b have the same shape and the same bits.
+inline bool bit_identical(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() &&
+         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<size_t>(a.size())) == 0;
+}
 
 /// Writes `bytes` to `path` as they are (binary).
 inline void write_bytes(const std::string& path, const std::string& bytes) {
