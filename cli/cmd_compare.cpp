@@ -6,10 +6,13 @@
 #include <sstream>
 
 #include "command.h"
+#include "msmesh/color_bar.h"
 #include "msmesh/errors.h"
+#include "msmesh/image.h"
 #include "msmesh/io.h"
 #include "msmesh/metrics.h"
 #include "msmesh/render.h"
+#include "msmesh/text.h"
 #include "report.h"
 
 namespace msmesh::cli {

@@ -6,7 +6,7 @@
 #include "command.h"
 #include "json.h"
 #include "msmesh/errors.h"
-#include "msmesh/inpaint.h"
+#include "msmesh/punch_holes.h"
 #include "msmesh/io.h"
 
 namespace msmesh::cli {

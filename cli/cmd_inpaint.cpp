@@ -8,6 +8,7 @@
 #include "json.h"
 #include "msmesh/errors.h"
 #include "msmesh/inpaint.h"
+#include "msmesh/metrics.h"
 #include "msmesh/geometry.h"
 #include "msmesh/io.h"
 #include "msmesh/parameters.h"

@@ -1,4 +1,4 @@
-// msmesh render: one mesh to a PNG picture (software rasteriser of msmesh/render.h).
+// msmesh render: one mesh to a PNG picture (software rasteriser of msmesh/render.h, draw/).
 #include <iostream>
 #include <memory>
 

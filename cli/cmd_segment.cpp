@@ -8,11 +8,11 @@
 
 #include "command.h"
 #include "json.h"
+#include "msmesh/color_map.h"
 #include "msmesh/denoise.h"
 #include "msmesh/presets.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
-#include "msmesh/render.h"
 #include "msmesh/parameters.h"
 #include "msmesh/segment.h"
 #include "parameter_options.h"

@@ -15,6 +15,8 @@
 #include "msmesh/io.h"
 #include "msmesh/metrics.h"
 #include "msmesh/parameters.h"
+#include "msmesh/png.h"
+#include "msmesh/text.h"
 
 // The viewer bundle, embedded at build time (see report/README.md): CMake reads
 // report/dist/viewer.js into a generated header. Without it (a build system that did not run

@@ -12,7 +12,10 @@
 #include <utility>
 #include <vector>
 
+#include "msmesh/color_bar.h"
+#include "msmesh/color_map.h"
 #include "msmesh/denoise.h"
+#include "msmesh/image.h"
 #include "msmesh/inpaint.h"
 #include "msmesh/mesh.h"
 #include "msmesh/render.h"

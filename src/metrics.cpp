@@ -7,11 +7,14 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
+#include "hole_fill.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
@@ -69,6 +72,39 @@ Eigen::Index first_different_face(const Eigen::MatrixXi& F, const Eigen::MatrixX
   }
   return -1;
 }
+
+// Points hashed on a uniform grid of cell size `cell`, for "is any point within r ≤ cell".
+class PointGrid {
+ public:
+  PointGrid(const Eigen::MatrixXd& P, const std::vector<int>& rows, double cell) : P_(P), cell_(cell) {
+    for (int i : rows) cells_[key(cell_of(P.row(i)))].push_back(i);
+  }
+  bool any_within(const Eigen::RowVector3d& q, double r) const {
+    const std::array<long long, 3> c = cell_of(q);
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy)
+        for (long long dz = -1; dz <= 1; ++dz) {
+          auto it = cells_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
+          if (it == cells_.end()) continue;
+          for (int i : it->second)
+            if ((P_.row(i) - q).squaredNorm() <= r * r) return true;
+        }
+    return false;
+  }
+
+ private:
+  std::array<long long, 3> cell_of(const Eigen::RowVector3d& p) const {
+    return {static_cast<long long>(std::floor(p(0) / cell_)), static_cast<long long>(std::floor(p(1) / cell_)),
+            static_cast<long long>(std::floor(p(2) / cell_))};
+  }
+  static unsigned long long key(const std::array<long long, 3>& c) {
+    const auto u = [](long long x) { return static_cast<unsigned long long>(x) & 0x1FFFFFull; };
+    return (u(c[0]) << 42) | (u(c[1]) << 21) | u(c[2]);
+  }
+  const Eigen::MatrixXd& P_;
+  double cell_;
+  std::unordered_map<unsigned long long, std::vector<int>> cells_;
+};
 
 }  // namespace
 
@@ -241,6 +277,84 @@ Evaluation evaluate(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Ei
   ev.same_connectivity = F.rows() == F_truth.rows() && first_different_face(F, F_truth) < 0;
   if (ev.same_connectivity) ev.normals = normal_errors(V, F, V_truth, F_truth);
   return ev;
+}
+
+InpaintErrors inpaint_errors(const Eigen::MatrixXd& V_input, const Eigen::MatrixXi& F_input,
+                             const Eigen::MatrixXd& V_result, const Eigen::MatrixXi& F_result,
+                             const std::vector<bool>& new_faces, const Eigen::MatrixXd& V_truth,
+                             const Eigen::MatrixXi& F_truth) {
+  validate_mesh(V_input, F_input, "inpainting errors: input");
+  validate_mesh(V_result, F_result, "inpainting errors: result");
+  validate_mesh(V_truth, F_truth, "inpainting errors: truth");
+  if (F_truth.rows() == 0 || F_result.rows() == 0)
+    throw InvalidInput("inpainting errors: the result and the truth need faces");
+  if (!new_faces.empty() && new_faces.size() != static_cast<size_t>(F_result.rows()))
+    throw InvalidInput("inpainting errors: new_faces must have one flag per result face");
+  const std::vector<int> truth_rows = referenced_vertices(V_truth.rows(), F_truth);
+  Eigen::MatrixXd truth_pts(static_cast<Eigen::Index>(truth_rows.size()), 3);
+  for (size_t i = 0; i < truth_rows.size(); ++i) truth_pts.row(static_cast<Eigen::Index>(i)) = V_truth.row(truth_rows[i]);
+  const double diag = bounding_box_diagonal(truth_pts);
+  if (!(diag > 0)) throw InvalidInput("inpainting errors: the truth has a zero-size bounding box");
+
+  double h = F_input.rows() ? mean_edge_length(V_input, F_input) : 0;
+  if (!(h > 0)) h = mean_edge_length(V_truth, F_truth);
+  const double t = 0.1 * h;
+  const std::vector<int> input_rows = referenced_vertices(V_input.rows(), F_input);
+  const PointGrid grid(V_input, input_rows, t);
+
+  auto far_points = [&](const Eigen::MatrixXd& P, const std::vector<int>& rows) {
+    std::vector<int> keep;
+    for (int i : rows)
+      if (!grid.any_within(P.row(i), t)) keep.push_back(i);
+    Eigen::MatrixXd Q(static_cast<Eigen::Index>(keep.size()), 3);
+    for (size_t k = 0; k < keep.size(); ++k) Q.row(static_cast<Eigen::Index>(k)) = P.row(keep[k]);
+    return Q;
+  };
+  const Eigen::MatrixXd missing = far_points(V_truth, truth_rows);
+  const Eigen::MatrixXd added = far_points(V_result, referenced_vertices(V_result.rows(), F_result));
+  std::vector<double> d;
+  if (missing.rows()) {
+    const Eigen::VectorXd a = SurfaceDistance(V_result, F_result).distances(missing);
+    d.insert(d.end(), a.data(), a.data() + a.size());
+  }
+  const SurfaceDistance truth_surface(V_truth, F_truth);
+  if (added.rows()) {
+    const Eigen::VectorXd b = truth_surface.distances(added);
+    d.insert(d.end(), b.data(), b.data() + b.size());
+  }
+  InpaintErrors e;
+  e.points = static_cast<Eigen::Index>(d.size());
+  double sum = 0, sum2 = 0;
+  for (double x : d) {
+    e.max = std::max(e.max, x / diag);
+    sum += x / diag;
+    sum2 += (x / diag) * (x / diag);
+  }
+  if (!d.empty()) {
+    e.mean = sum / double(d.size());
+    e.rms = std::sqrt(sum2 / double(d.size()));
+  }
+
+  std::vector<int> nf;
+  for (Eigen::Index f = 0; f < F_result.rows(); ++f)
+    if (new_faces.empty() ? f >= F_input.rows() : new_faces[f]) nf.push_back(static_cast<int>(f));
+  e.new_faces = static_cast<Eigen::Index>(nf.size());
+  if (!nf.empty()) {
+    Eigen::MatrixXi Fn(e.new_faces, 3);
+    for (size_t k = 0; k < nf.size(); ++k) Fn.row(static_cast<Eigen::Index>(k)) = F_result.row(nf[k]);
+    const Eigen::MatrixXd Nn = face_normals(V_result, Fn);
+    const Eigen::MatrixXd B = face_barycenters(V_result, Fn);
+    const Eigen::VectorXi cf = detail::closest_faces(V_truth, F_truth, B);
+    const Eigen::MatrixXd Nt = face_normals(V_truth, F_truth);
+    double s = 0;
+    for (Eigen::Index k = 0; k < e.new_faces; ++k) {
+      const Eigen::RowVector3d a = Nn.row(k), b = Nt.row(cf(k));
+      s += (a.squaredNorm() == 0 || b.squaredNorm() == 0) ? 90.0
+                                                          : std::acos(std::clamp(a.dot(b), -1.0, 1.0)) * 180.0 / kPi;
+    }
+    e.mean_normal_error_deg = s / double(e.new_faces);
+  }
+  return e;
 }
 
 }  // namespace msmesh

@@ -8,6 +8,7 @@
 #include <array>
 #include <atomic>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <random>
 #include <fstream>
@@ -91,6 +92,43 @@ class TempDir {
   std::filesystem::path path_;
 };
 
+/// grid(n) without the cells (i, j) (column i, row j) for which drop(i, j) is true; every
+/// vertex is kept.
+template <class Drop>
+inline Mesh grid_without_cells(int n, Drop drop) {
+  Mesh g = grid(n);
+  std::vector<int> keep;
+  for (int f = 0; f < g.F.rows(); ++f) {
+    const int cell = f / 2, i = cell % n, j = cell / n;
+    if (drop(i, j)) continue;
+    keep.push_back(f);
+  }
+  Mesh m;
+  m.V = g.V;
+  m.F.resize(static_cast<Eigen::Index>(keep.size()), 3);
+  for (size_t k = 0; k < keep.size(); ++k) m.F.row(static_cast<Eigen::Index>(k)) = g.F.row(keep[k]);
+  return m;
+}
+
+/// A 10×10 grid() with the four middle cells removed: a rim (40 edges) and a hole (8 edges).
+inline Mesh grid_with_hole() {
+  return grid_without_cells(10, [](int i, int j) { return (i == 4 || i == 5) && (j == 4 || j == 5); });
+}
+
+/// A 6×6 grid() with the two cells (2,2) and (3,3) removed: they share the vertex at grid point
+/// (3,3), so the boundary around them touches itself there.
+inline Mesh grid_with_touching_holes(int* touching) {
+  const int n = 6;
+  *touching = 3 * (n + 1) + 3;
+  return grid_without_cells(n, [](int i, int j) { return (i == 2 && j == 2) || (i == 3 && j == 3); });
+}
+
+/// True when a and b have the same shape and the same bits.
+inline bool bit_identical(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() &&
+         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<size_t>(a.size())) == 0;
+}
+
 /// Writes `bytes` to `path` as they are (binary).
 inline void write_bytes(const std::string& path, const std::string& bytes) {
   std::ofstream out(path, std::ios::binary);
@@ -111,11 +149,10 @@ struct CliRun {
   std::string out;
 };
 
-/// Runs `msmesh ARGS` (the built program) and captures its output.
-inline CliRun run_cli(const std::string& args) {
+/// Runs the shell command `cmd_line` and captures its exit status and output.
+inline CliRun run_command(const std::string& cmd_line) {
   CliRun r;
-  const std::string cmd = std::string(MSMESH_CLI_PATH) + " " + args + " 2>&1";
-  FILE* p = ::popen(cmd.c_str(), "r");
+  FILE* p = ::popen((cmd_line + " 2>&1").c_str(), "r");
   if (!p) return r;
   std::array<char, 4096> buf;
   std::size_t n;
@@ -123,6 +160,19 @@ inline CliRun run_cli(const std::string& args) {
   const int st = ::pclose(p);
   r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
   return r;
+}
+
+/// Runs `msmesh ARGS` (the built program) and captures its output.
+inline CliRun run_cli(const std::string& args) { return run_command(std::string(MSMESH_CLI_PATH) + " " + args); }
+
+/// A new empty folder under the system's temporary folder, named after `tag` (remove it with
+/// std::filesystem::remove_all).
+inline std::filesystem::path temp_folder(const std::string& tag) {
+  std::random_device rd;
+  std::filesystem::path p = std::filesystem::temp_directory_path() /
+                            ("msmesh_test_" + tag + "_" + std::to_string(::getpid()) + "_" + std::to_string(rd()));
+  std::filesystem::create_directories(p);
+  return p;
 }
 
 /// Path of the public test meshes, or "" when ../shared is absent (tests then skip).

@@ -1,5 +1,6 @@
-// Inpainting (inpaint.h): hole finding, the hole puncher, CGAL fill + NMSTV feature recovery,
-// the error figures, and the `msmesh inpaint` / `msmesh holes` commands.
+// Inpainting (inpaint.h): which holes are filled, CGAL fill + NMSTV feature recovery, and the
+// `msmesh inpaint` / `msmesh holes` commands. Hole finding: test_holes.cpp; the puncher:
+// test_punch_holes.cpp; the error figures: test_metrics.cpp.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -17,6 +18,8 @@
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/inpaint.h"
+#include "msmesh/metrics.h"
+#include "msmesh/punch_holes.h"
 #include "msmesh/io.h"
 #include "msmesh/shapes.h"
 #include "msmesh/topology.h"
@@ -28,11 +31,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-bool bit_identical(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
-  return a.rows() == b.rows() && a.cols() == b.cols() &&
-         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<size_t>(a.size())) == 0;
-}
 
 // The cube [-1,1]^3 of resolution n with one hole punched on a crease, away from the corners
 // (the first seed whose centre lies on an edge with |third coordinate| < 0.5).
@@ -69,25 +67,6 @@ std::vector<double> cube_face_errors(const InpaintResult& r) {
   return errs;
 }
 
-// A 6×6 grid with the two cells (2,2) and (3,3) removed: they share the vertex at grid point
-// (3,3), so the boundary around them touches itself there.
-Mesh grid_with_touching_holes(int* touching) {
-  const int n = 6;
-  Mesh g = test::grid(n);
-  std::vector<int> keep;
-  for (int f = 0; f < g.F.rows(); ++f) {
-    const int cell = f / 2, i = cell % n, j = cell / n;
-    if ((i == 2 && j == 2) || (i == 3 && j == 3)) continue;
-    keep.push_back(f);
-  }
-  Mesh m;
-  m.V = g.V;
-  m.F.resize(static_cast<Eigen::Index>(keep.size()), 3);
-  for (size_t k = 0; k < keep.size(); ++k) m.F.row(static_cast<Eigen::Index>(k)) = g.F.row(keep[k]);
-  *touching = 3 * (n + 1) + 3;
-  return m;
-}
-
 fs::path temp_folder() {
   std::random_device rd;
   fs::path p =
@@ -97,145 +76,6 @@ fs::path temp_folder() {
 }
 
 }  // namespace
-
-// ---- hole finding ----
-
-TEST(HolesFind, ClosedMeshHasNone) {
-  const Mesh cube = make_cube(4);
-  EXPECT_TRUE(find_holes(cube.V, cube.F).empty());
-}
-
-TEST(HolesFind, GridRimIsTheOuterBoundaryAndAHoleIsNot) {
-  // A 10×10 grid with the four middle cells removed: a rim (40 edges) and a hole (8 edges).
-  Mesh g = test::grid(10);
-  std::vector<int> keep;
-  for (int f = 0; f < g.F.rows(); ++f) {
-    const int cell = f / 2, i = cell % 10, j = cell / 10;
-    if ((i == 4 || i == 5) && (j == 4 || j == 5)) continue;
-    keep.push_back(f);
-  }
-  Eigen::MatrixXi F(static_cast<Eigen::Index>(keep.size()), 3);
-  for (size_t k = 0; k < keep.size(); ++k) F.row(static_cast<Eigen::Index>(k)) = g.F.row(keep[k]);
-  const std::vector<Hole> holes = find_holes(g.V, F);
-  ASSERT_EQ(holes.size(), 2u);
-  int outer = 0;
-  for (const Hole& h : holes) {
-    EXPECT_TRUE(h.simple);
-    EXPECT_EQ(h.loop.size(), static_cast<size_t>(h.edges));
-    if (h.outer_boundary) {
-      ++outer;
-      EXPECT_EQ(h.edges, 40);
-      EXPECT_NEAR(h.diameter, std::sqrt(2.0) / mean_edge_length(g.V, F), 1e-9);  // corner to corner
-    } else {
-      EXPECT_EQ(h.edges, 8);
-    }
-  }
-  EXPECT_EQ(outer, 1);
-
-  // Only the inner hole is filled; the rim is skipped and says why.
-  InpaintOptions o;
-  const InpaintResult r = inpaint(g.V, F, o);
-  EXPECT_EQ(r.filled, 1);
-  EXPECT_EQ(r.skipped, 1);
-  for (size_t i = 0; i < r.holes.size(); ++i)
-    if (r.holes[i].outer_boundary) {
-      EXPECT_EQ(r.reports[i].action, HoleAction::Skipped);
-      EXPECT_NE(r.reports[i].reason.find("outer boundary"), std::string::npos) << r.reports[i].reason;
-    }
-  // Unless asked for explicitly.
-  o.fill_outer_boundary = true;
-  EXPECT_EQ(inpaint(g.V, F, o).filled, 2);
-}
-
-TEST(HolesFind, LargeHolesInAClosedMeshAreNotOuterBoundaries) {
-  // Holes of radius 6 edges on a cube of 16 × 16 quads per side: each spans more than half of
-  // the bounding-box diagonal, but only a small part of the surface.
-  const Mesh cube = make_cube(16);
-  const PunchResult p = punch_holes(cube.V, cube.F, 3, 6, 1, true);
-  ASSERT_EQ(p.punched, 3);
-  for (const Hole& h : find_holes(p.V, p.F)) {
-    EXPECT_FALSE(h.outer_boundary) << "diameter " << h.diameter << ", spanned area " << h.spanned_area;
-    EXPECT_GT(h.spanned_area, 0);
-  }
-}
-
-TEST(HolesFind, NonManifoldFinDoesNotCrash) {
-  const Mesh fin = test::fin();  // three triangles on one edge: its end vertices touch twice
-  InpaintResult r;
-  ASSERT_NO_THROW(r = inpaint(fin.V, fin.F));
-  EXPECT_EQ(r.filled, 0);
-  EXPECT_EQ(r.F, fin.F);
-}
-
-TEST(HolesFind, BoundaryTouchingItselfIsReportedNotFilled) {
-  int touching = -1;
-  const Mesh m = grid_with_touching_holes(&touching);
-  const std::vector<Hole> holes = find_holes(m.V, m.F);
-  int non_simple = 0;
-  for (const Hole& h : holes)
-    if (!h.simple) {
-      ++non_simple;
-      EXPECT_EQ(h.touching_vertex, touching);
-      EXPECT_EQ(h.edges, 8);
-      EXPECT_EQ(h.loop.size(), 8u);  // the closed walk visits the touching vertex twice
-    }
-  EXPECT_EQ(non_simple, 1);
-
-  InpaintResult r;
-  ASSERT_NO_THROW(r = inpaint(m.V, m.F));
-  for (size_t i = 0; i < r.holes.size(); ++i)
-    if (!r.holes[i].simple) {
-      EXPECT_EQ(r.reports[i].action, HoleAction::Skipped);
-      EXPECT_NE(r.reports[i].reason.find("touches itself"), std::string::npos) << r.reports[i].reason;
-    }
-  // Listed explicitly: still skipped, still no crash.
-  InpaintOptions o;
-  for (size_t i = 0; i < r.holes.size(); ++i)
-    if (!r.holes[i].simple) o.holes.push_back(static_cast<int>(i));
-  ASSERT_NO_THROW(r = inpaint(m.V, m.F, o));
-  EXPECT_EQ(r.filled, 0);
-  EXPECT_TRUE(bit_identical(r.V, m.V));
-  EXPECT_EQ(r.F, m.F);
-}
-
-// ---- the puncher ----
-
-TEST(HolesPunch, MakesTheRequestedNumberOfSimpleLoops) {
-  const Mesh cube = make_cube(12);
-  for (bool on_features : {false, true}) {
-    const PunchResult p = punch_holes(cube.V, cube.F, 4, 2.5, 7, on_features);
-    ASSERT_EQ(p.punched, 4);
-    ASSERT_EQ(p.centers.size(), 4u);
-    const std::vector<Hole> holes = find_holes(p.V, p.F);
-    ASSERT_EQ(holes.size(), 4u);
-    for (const Hole& h : holes) {
-      EXPECT_TRUE(h.simple);
-      EXPECT_FALSE(h.outer_boundary);
-      EXPECT_GE(h.edges, 6);
-    }
-    // The index maps agree, rows are copied exactly, and no vertex is left unreferenced.
-    ASSERT_EQ(p.vertex_map.size(), p.V.rows());
-    for (Eigen::Index i = 0; i < p.V.rows(); ++i) {
-      EXPECT_EQ(p.old_to_new(p.vertex_map(i)), i);
-      EXPECT_TRUE(p.V.row(i) == cube.V.row(p.vertex_map(i)));
-    }
-    for (int c : p.centers) EXPECT_EQ(p.old_to_new(c), -1);
-    const TopologySummary s = summarize_topology(p.F, build_topology(p.F, p.V.rows()));
-    EXPECT_EQ(s.unreferenced_vertices, 0);
-    EXPECT_EQ(s.non_manifold_vertices, 0);
-    EXPECT_EQ(s.boundary_loops.size(), 4u);
-    if (on_features)
-      for (int c : p.centers) {  // a centre on a cube edge has two coordinates at ±1
-        int planes = 0;
-        for (int k = 0; k < 3; ++k) planes += std::abs(std::abs(cube.V(c, k)) - 1) < 1e-12;
-        EXPECT_GE(planes, 2);
-      }
-  }
-  // Same seed, same holes.
-  EXPECT_EQ(punch_holes(cube.V, cube.F, 3, 2, 5).F, punch_holes(cube.V, cube.F, 3, 2, 5).F);
-  EXPECT_THROW(punch_holes(cube.V, cube.F, -1, 2, 5), InvalidInput);
-  EXPECT_THROW(punch_holes(cube.V, cube.F, 1, 0, 5), InvalidInput);
-}
 
 // ---- inpainting ----
 
@@ -248,7 +88,7 @@ TEST(InpaintCube, CreaseAcrossAnEdgeIsRestored) {
   EXPECT_EQ(r.featured, 1);
   // Input vertices and faces untouched, bit for bit; new ones after them.
   ASSERT_GE(r.V.rows(), p.V.rows());
-  EXPECT_TRUE(bit_identical(r.V.topRows(p.V.rows()), p.V));
+  EXPECT_TRUE(test::bit_identical(r.V.topRows(p.V.rows()), p.V));
   EXPECT_EQ(r.F.topRows(p.F.rows()), p.F);
   EXPECT_GT(r.V.rows(), p.V.rows());
   EXPECT_TRUE(find_holes(r.V, r.F).empty());
@@ -269,7 +109,7 @@ TEST(InpaintCube, CornersAndCreasesWithSeveralHoles) {
   ASSERT_EQ(p.punched, 4);
   const InpaintResult r = inpaint(p.V, p.F);
   EXPECT_EQ(r.filled, 4);
-  EXPECT_TRUE(bit_identical(r.V.topRows(p.V.rows()), p.V));
+  EXPECT_TRUE(test::bit_identical(r.V.topRows(p.V.rows()), p.V));
   const std::vector<double> errs = cube_face_errors(r);
   double sum = 0;
   for (double e : errs) {
@@ -321,12 +161,58 @@ TEST(InpaintCube, FreeRingLetsOnlyTheRingMove) {
   for (double e : cube_face_errors(r)) EXPECT_LT(e, 5.0);
 }
 
+TEST(InpaintLimits, OuterBoundaryIsSkippedUnlessAsked) {
+  const Mesh g = test::grid_with_hole();
+  const Eigen::MatrixXi& F = g.F;
+  // Only the inner hole is filled; the rim is skipped and says why.
+  InpaintOptions o;
+  const InpaintResult r = inpaint(g.V, F, o);
+  EXPECT_EQ(r.filled, 1);
+  EXPECT_EQ(r.skipped, 1);
+  for (size_t i = 0; i < r.holes.size(); ++i)
+    if (r.holes[i].outer_boundary) {
+      EXPECT_EQ(r.reports[i].action, HoleAction::Skipped);
+      EXPECT_NE(r.reports[i].reason.find("outer boundary"), std::string::npos) << r.reports[i].reason;
+    }
+  // Unless asked for explicitly.
+  o.fill_outer_boundary = true;
+  EXPECT_EQ(inpaint(g.V, F, o).filled, 2);
+}
+
+TEST(InpaintLimits, NonManifoldFinDoesNotCrash) {
+  const Mesh fin = test::fin();  // three triangles on one edge: its end vertices touch twice
+  InpaintResult r;
+  ASSERT_NO_THROW(r = inpaint(fin.V, fin.F));
+  EXPECT_EQ(r.filled, 0);
+  EXPECT_EQ(r.F, fin.F);
+}
+
+TEST(InpaintLimits, BoundaryTouchingItselfIsNotFilled) {
+  int touching = -1;
+  const Mesh m = test::grid_with_touching_holes(&touching);
+  InpaintResult r;
+  ASSERT_NO_THROW(r = inpaint(m.V, m.F));
+  for (size_t i = 0; i < r.holes.size(); ++i)
+    if (!r.holes[i].simple) {
+      EXPECT_EQ(r.reports[i].action, HoleAction::Skipped);
+      EXPECT_NE(r.reports[i].reason.find("touches itself"), std::string::npos) << r.reports[i].reason;
+    }
+  // Listed explicitly: still skipped, still no crash.
+  InpaintOptions o;
+  for (size_t i = 0; i < r.holes.size(); ++i)
+    if (!r.holes[i].simple) o.holes.push_back(static_cast<int>(i));
+  ASSERT_NO_THROW(r = inpaint(m.V, m.F, o));
+  EXPECT_EQ(r.filled, 0);
+  EXPECT_TRUE(test::bit_identical(r.V, m.V));
+  EXPECT_EQ(r.F, m.F);
+}
+
 TEST(InpaintLimits, MeshWithoutHolesComesBackUnchanged) {
   const Mesh cube = make_cube(5);
   const InpaintResult r = inpaint(cube.V, cube.F);
   EXPECT_TRUE(r.holes.empty());
   EXPECT_EQ(r.filled, 0);
-  EXPECT_TRUE(bit_identical(r.V, cube.V));
+  EXPECT_TRUE(test::bit_identical(r.V, cube.V));
   EXPECT_EQ(r.F, cube.F);
   EXPECT_TRUE(std::none_of(r.new_faces.begin(), r.new_faces.end(), [](bool b) { return b; }));
 }
@@ -343,7 +229,7 @@ TEST(InpaintLimits, HoleOverTheLimitsIsSkippedAndReported) {
   EXPECT_EQ(r.skipped, 1);
   EXPECT_EQ(r.reports[0].action, HoleAction::Skipped);
   EXPECT_NE(r.reports[0].reason.find("max_hole_edges"), std::string::npos) << r.reports[0].reason;
-  EXPECT_TRUE(bit_identical(r.V, p.V));
+  EXPECT_TRUE(test::bit_identical(r.V, p.V));
   EXPECT_EQ(r.F, p.F);
 
   o = {};
@@ -361,14 +247,6 @@ TEST(InpaintLimits, HoleOverTheLimitsIsSkippedAndReported) {
   o = {};
   o.holes = {1};
   EXPECT_THROW(inpaint(p.V, p.F, o), InvalidInput);
-}
-
-TEST(InpaintErrorsTest, TruthEqualToInputHasNothingToMeasure) {
-  const Mesh cube = make_cube(4);
-  const InpaintErrors e = inpaint_errors(cube.V, cube.F, cube.V, cube.F, {}, cube.V, cube.F);
-  EXPECT_EQ(e.points, 0);
-  EXPECT_EQ(e.max, 0);
-  EXPECT_EQ(e.new_faces, 0);
 }
 
 // ---- public data ----
@@ -390,7 +268,7 @@ TEST(InpaintSharedData, BeatsCgalFillAndFairOnACadPair) {
   EXPECT_NEAR(ec.rms * 1e3, 8.63, 0.5);
   EXPECT_LT(em.rms, ec.rms);
   EXPECT_LT(em.max, ec.max);
-  EXPECT_TRUE(bit_identical(m.V.topRows(in.V.rows()), in.V));
+  EXPECT_TRUE(test::bit_identical(m.V.topRows(in.V.rows()), in.V));
 }
 
 // ---- command line ----

@@ -9,6 +9,7 @@
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/metrics.h"
+#include "msmesh/shapes.h"
 #include "test_helpers.h"
 
 using namespace msmesh;
@@ -228,4 +229,14 @@ TEST(Metrics, PublicFandiskNoisyMeanAngle) {
   // ../shared/data/meshes/SOURCES.md measures 28.42° for this pair.
   EXPECT_NEAR(e.mean_angle_deg, 28.42, 0.05);
   std::printf("fandisk 0.3: mean angle %.3f deg, MSAE×1e3 %.3f\n", e.mean_angle_deg, e.msae * 1e3);
+}
+
+// ---- inpainting errors ----
+
+TEST(InpaintErrorsTest, TruthEqualToInputHasNothingToMeasure) {
+  const Mesh cube = make_cube(4);
+  const InpaintErrors e = inpaint_errors(cube.V, cube.F, cube.V, cube.F, {}, cube.V, cube.F);
+  EXPECT_EQ(e.points, 0);
+  EXPECT_EQ(e.max, 0);
+  EXPECT_EQ(e.new_faces, 0);
 }

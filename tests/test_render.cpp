@@ -1,6 +1,6 @@
-// render.h: the rasteriser against known pixels of simple scenes, the 2D drawing, the PNG
-// encoder (decoded by an independent decoder: Python's zlib), and the CLI's render, compare
-// and --report outputs.
+// render.h: the rasteriser against known pixels of simple scenes, and the CLI's render,
+// compare and --report outputs. The other headers of the drawing library have their own tests
+// (test_image, test_color_map, test_text, test_color_bar, test_png).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -16,8 +16,11 @@
 #include <string>
 
 #include "msmesh/errors.h"
+#include "msmesh/image.h"
 #include "msmesh/io.h"
+#include "msmesh/png.h"
 #include "msmesh/render.h"
+#include "image_test_helpers.h"
 #include "test_helpers.h"
 
 using namespace msmesh;
@@ -50,47 +53,10 @@ Mesh cube() {
   return m;
 }
 
-std::array<int, 3> px(const Image& im, int x, int y) {
-  const size_t i = (static_cast<size_t>(y) * im.width + x) * 3;
-  return {im.rgb[i], im.rgb[i + 1], im.rgb[i + 2]};
-}
-
 /// The byte the rasteriser should write for a face of colour c and normal n (camera space).
 int expected_byte(double c, const Eigen::Vector3d& n_camera, const RenderOptions& o) {
   const double shade = o.ambient + o.diffuse * std::max(0.0, n_camera.dot(o.light.normalized()));
   return static_cast<int>(std::lround(std::min(1.0, c * shade) * 255));
-}
-
-fs::path temp_folder(const std::string& tag) {
-  std::random_device rd;
-  fs::path p = fs::temp_directory_path() /
-               ("msmesh_test_render_" + tag + "_" + std::to_string(::getpid()) + "_" + std::to_string(rd()));
-  fs::create_directories(p);
-  return p;
-}
-
-struct CliRun {
-  int status = -1;
-  std::string out;
-};
-
-CliRun run(const std::string& cmd_line) {
-  CliRun r;
-  FILE* p = ::popen((cmd_line + " 2>&1").c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf;
-  size_t n;
-  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int st = ::pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
-
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream os;
-  os << in.rdbuf();
-  return os.str();
 }
 
 }  // namespace
@@ -111,11 +77,11 @@ TEST(Render, TriangleFacingTheCameraHasTheExpectedShadeAndWhiteCorners) {
   ASSERT_EQ(im.rgb.size(), 64u * 48u * 3u);
   // Front view: camera space normal (0, 0, 1); light grey base colour.
   const int e = expected_byte(o.base_color(0), Eigen::Vector3d(0, 0, 1), o);
-  for (int k : px(im, 32, 24)) EXPECT_EQ(k, e);
+  for (int k : test::px(im, 32, 24)) EXPECT_EQ(k, e);
   for (auto [x, y] : {std::pair{0, 0}, {63, 0}, {0, 47}, {63, 47}})
-    for (int k : px(im, x, y)) EXPECT_EQ(k, 255) << "corner " << x << "," << y;
+    for (int k : test::px(im, x, y)) EXPECT_EQ(k, 255) << "corner " << x << "," << y;
   // The apex is at the top centre: the top row is white away from the middle.
-  for (int k : px(im, 10, 3)) EXPECT_EQ(k, 255);
+  for (int k : test::px(im, 10, 3)) EXPECT_EQ(k, 255);
 }
 
 TEST(Render, BackSideIsLitLikeTheFront) {
@@ -126,7 +92,7 @@ TEST(Render, BackSideIsLitLikeTheFront) {
   o.view = View::Front;
   const Image a = render_mesh(m.V, m.F, {}, o);
   const Image b = render_mesh(big_triangle().V, big_triangle().F, {}, o);
-  EXPECT_EQ(px(a, 16, 16), px(b, 16, 16));
+  EXPECT_EQ(test::px(a, 16, 16), test::px(b, 16, 16));
 }
 
 TEST(Render, ZBufferKeepsTheNearestFaceWhateverTheOrder) {
@@ -147,13 +113,13 @@ TEST(Render, ZBufferKeepsTheNearestFaceWhateverTheOrder) {
   MeshStyle s2 = s;
   s2.face_colors = s.face_colors.colwise().reverse();
   const Image b = render_mesh(m.V, F2, s2, o);
-  const auto c = px(a, 20, 20);
+  const auto c = test::px(a, 20, 20);
   EXPECT_GT(c[0], 100);
   EXPECT_EQ(c[2], 0);
-  EXPECT_EQ(c, px(b, 20, 20));
+  EXPECT_EQ(c, test::px(b, 20, 20));
   // Seen from the back, the blue one is in front.
   o.view = View::Back;
-  const auto d = px(render_mesh(m.V, m.F, s, o), 20, 20);
+  const auto d = test::px(render_mesh(m.V, m.F, s, o), 20, 20);
   EXPECT_EQ(d[0], 0);
   EXPECT_GT(d[2], 100);
 }
@@ -168,7 +134,7 @@ TEST(Render, CubeIsoViewShowsThreeDistinctShades) {
   int covered = 0;
   for (int y = 0; y < im.height; ++y)
     for (int x = 0; x < im.width; ++x) {
-      const auto c = px(im, x, y);
+      const auto c = test::px(im, x, y);
       if (c == std::array<int, 3>{255, 255, 255}) continue;
       ++covered;
       ++histogram[c];
@@ -181,7 +147,7 @@ TEST(Render, CubeIsoViewShowsThreeDistinctShades) {
   for (size_t i = 0; i < 3; ++i)
     for (size_t j = i + 1; j < 3; ++j) EXPECT_GT(std::abs(big[i].second[0] - big[j].second[0]), 8);
   // The top face (+y) is in the upper middle of the picture and the brightest (light from above).
-  const auto top = px(im, 60, 30);
+  const auto top = test::px(im, 60, 30);
   for (const auto& b : big) EXPECT_GE(top[0], b.second[0]);
   // The expected shade of the top face: its camera-space normal is (0, up·y, back·y).
   const Eigen::Vector3d back = Eigen::Vector3d(1, 1, 1).normalized();
@@ -216,7 +182,7 @@ TEST(Render, ViewsFrameTheMeshInsideTheMargin) {
       int xmin = im.width, xmax = -1, ymin = im.height, ymax = -1;
       for (int y = 0; y < im.height; ++y)
         for (int x = 0; x < im.width; ++x)
-          if (px(im, x, y) != std::array<int, 3>{255, 255, 255}) {
+          if (test::px(im, x, y) != std::array<int, 3>{255, 255, 255}) {
             xmin = std::min(xmin, x);
             xmax = std::max(xmax, x);
             ymin = std::min(ymin, y);
@@ -248,9 +214,9 @@ TEST(Render, LinesAreDrawnOnTheirEdgeOnly) {
   const Image im = render_mesh(m.V, m.F, s, o);
   // The bottom edge is at y = 95 (5% margin): a dark line just above it; the centre is grey.
   int darkest = 255;
-  for (int y = 90; y < 96; ++y) darkest = std::min(darkest, px(im, 50, y)[0]);
+  for (int y = 90; y < 96; ++y) darkest = std::min(darkest, test::px(im, 50, y)[0]);
   EXPECT_LT(darkest, 40);
-  EXPECT_GT(px(im, 50, 50)[0], 150);
+  EXPECT_GT(test::px(im, 50, 50)[0], 150);
   s.lines << 0, 5;
   EXPECT_THROW(render_mesh(m.V, m.F, s, o), InvalidInput);
 }
@@ -303,153 +269,16 @@ TEST(Render, SharpEdgesOfACubeAreItsTwelveEdges) {
 }
 
 // ---------------------------------------------------------------------------------------
-// 2D drawing and colour maps
-// ---------------------------------------------------------------------------------------
-
-TEST(Draw, TextStaysInItsBox) {
-  Image im(60, 30);
-  EXPECT_EQ(text_width("ab", 2), 22);
-  EXPECT_EQ(text_height(2), 16);
-  EXPECT_EQ(text_width("5\xC2\xB0", 1), 11) << "the degree sign is one character";
-  draw_text(im, 10, 5, "E8", Eigen::Vector3d::Zero(), 2);
-  int inside = 0, outside = 0;
-  for (int y = 0; y < im.height; ++y)
-    for (int x = 0; x < im.width; ++x) {
-      const bool ink = px(im, x, y)[0] == 0;
-      const bool in_box = x >= 10 && x < 10 + text_width("E8", 2) && y >= 5 && y < 5 + text_height(2);
-      (in_box ? inside : outside) += ink;
-    }
-  EXPECT_GT(inside, 40);
-  EXPECT_EQ(outside, 0);
-}
-
-TEST(Draw, TickLabels) {
-  EXPECT_EQ(format_tick(0), "0");
-  EXPECT_EQ(format_tick(0.25), "0.25");
-  EXPECT_EQ(format_tick(12.5), "12.5");
-  EXPECT_EQ(format_tick(1500), "1500");
-  EXPECT_EQ(format_tick(100), "100");
-  EXPECT_EQ(format_tick(0.6789), "0.679");
-  EXPECT_EQ(format_tick(-2), "-2");
-  EXPECT_EQ(format_tick(2e-5), "2e-05");
-}
-
-TEST(Draw, ColorBarShowsTheMapFromLeftToRight) {
-  Image im(300, 40);
-  ColorBar bar;
-  bar.map = heat_color;
-  bar.min = 0;
-  bar.max = 10;
-  draw_color_bar(im, 0, 0, 300, 40, bar, 1);
-  // Somewhere in the bar's first row the lightest colour, further right darker ones.
-  const auto left = px(im, 20, 5), right = px(im, 280, 5);
-  EXPECT_GT(left[1], right[1] + 100);
-  EXPECT_THROW(draw_color_bar(im, 0, 0, 10, 10, ColorBar{}, 1), InvalidInput);
-}
-
-TEST(Draw, ColourMapsAndStacks) {
-  EXPECT_TRUE(heat_color(0).isApprox(Eigen::Vector3d(1, 1, 204 / 255.0)));
-  EXPECT_TRUE(heat_color(1).isApprox(Eigen::Vector3d(128, 0, 38) / 255.0));
-  EXPECT_TRUE(heat_color(7).isApprox(heat_color(1)));
-  EXPECT_FALSE(label_color(0).isApprox(label_color(1), 0.05));
-  const Image a(10, 5, Eigen::Vector3d(1, 0, 0)), b(4, 8, Eigen::Vector3d(0, 0, 1));
-  const Image h = hstack({a, b}, 2);
-  EXPECT_EQ(h.width, 16);
-  EXPECT_EQ(h.height, 8);
-  EXPECT_EQ(px(h, 0, 0), (std::array<int, 3>{255, 0, 0}));
-  EXPECT_EQ(px(h, 11, 0), (std::array<int, 3>{255, 255, 255}));
-  EXPECT_EQ(px(h, 12, 7), (std::array<int, 3>{0, 0, 255}));
-  const Image v = vstack({a, b}, 1);
-  EXPECT_EQ(v.width, 10);
-  EXPECT_EQ(v.height, 14);
-}
-
-// ---------------------------------------------------------------------------------------
-// PNG
-// ---------------------------------------------------------------------------------------
-
-TEST(Png, StructureAndChecksums) {
-  Image im(7, 3, Eigen::Vector3d(0.2, 0.4, 0.6));
-  const std::vector<std::uint8_t> png = encode_png(im);
-  ASSERT_GT(png.size(), 8u + 25u + 12u + 12u);
-  EXPECT_EQ(std::vector<std::uint8_t>(png.begin(), png.begin() + 8),
-            (std::vector<std::uint8_t>{0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'}));
-  EXPECT_EQ(std::string(png.begin() + 12, png.begin() + 16), "IHDR");
-  auto u32 = [&](size_t i) { return (png[i] << 24) | (png[i + 1] << 16) | (png[i + 2] << 8) | png[i + 3]; };
-  EXPECT_EQ(u32(16), 7u);
-  EXPECT_EQ(u32(20), 3u);
-  EXPECT_EQ(png[24], 8);  // bit depth
-  EXPECT_EQ(png[25], 2);  // RGB
-  EXPECT_EQ(std::string(png.end() - 8, png.end() - 4), "IEND");
-  EXPECT_THROW(encode_png(Image()), InvalidInput);
-}
-
-TEST(Png, DecodesToTheSamePixelsWithAnIndependentDecoder) {
-  if (std::system("python3 -c 'import zlib' >/dev/null 2>&1") != 0) GTEST_SKIP() << "python3 not available";
-  // A picture with flat areas, gradients and noise: every filter type and match length.
-  Image im(97, 61);
-  std::mt19937 rng(5);
-  for (int y = 0; y < im.height; ++y)
-    for (int x = 0; x < im.width; ++x) {
-      Eigen::Vector3d c(x / 96.0, y / 60.0, 0.5);
-      if (x > 60) c = Eigen::Vector3d::Constant((rng() % 256) / 255.0);
-      if (y < 10) c = Eigen::Vector3d(0.9, 0.9, 0.9);
-      im.set(x, y, c);
-    }
-  const fs::path dir = temp_folder("png");
-  const std::vector<std::uint8_t> png = encode_png(im);
-  {
-    std::ofstream out(dir / "a.png", std::ios::binary);
-    out.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
-  }
-  const std::string script = R"PY(
-import struct, sys, zlib
-d = open(sys.argv[1], 'rb').read()
-i, idat = 8, b''
-while i < len(d):
-    n, = struct.unpack('>I', d[i:i+4]); t = d[i+4:i+8]; body = d[i+8:i+8+n]
-    assert zlib.crc32(t + body) == struct.unpack('>I', d[i+8+n:i+12+n])[0], 'bad CRC'
-    if t == b'IHDR': w, h = struct.unpack('>II', body[:8])
-    if t == b'IDAT': idat += body
-    i += 12 + n
-raw = zlib.decompress(idat); s = 3 * w; out = bytearray(); prev = bytearray(s)
-for y in range(h):
-    f = raw[y*(s+1)]; line = bytearray(raw[y*(s+1)+1:(y+1)*(s+1)])
-    for x in range(s):
-        a = line[x-3] if x >= 3 else 0; b = prev[x]; c = prev[x-3] if x >= 3 else 0
-        if f == 1: line[x] = (line[x] + a) & 255
-        elif f == 2: line[x] = (line[x] + b) & 255
-        elif f == 3: line[x] = (line[x] + (a + b) // 2) & 255
-        elif f == 4:
-            p = a + b - c; pa, pb, pc = abs(p-a), abs(p-b), abs(p-c)
-            line[x] = (line[x] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-    out += line; prev = line
-open(sys.argv[2], 'wb').write(out)
-)PY";
-  {
-    std::ofstream(dir / "decode.py") << script;
-  }
-  const CliRun r = run("python3 '" + (dir / "decode.py").string() + "' '" + (dir / "a.png").string() + "' '" +
-                       (dir / "a.rgb").string() + "'");
-  ASSERT_EQ(r.status, 0) << r.out;
-  const std::string rgb = read_file(dir / "a.rgb");
-  ASSERT_EQ(rgb.size(), im.rgb.size());
-  EXPECT_TRUE(std::equal(rgb.begin(), rgb.end(), im.rgb.begin(),
-                         [](char a, std::uint8_t b) { return static_cast<std::uint8_t>(a) == b; }));
-  fs::remove_all(dir);
-}
-
-// ---------------------------------------------------------------------------------------
 // Command line: render, compare, denoise --report
 // ---------------------------------------------------------------------------------------
 
 TEST(RenderCli, RenderCompareAndReport) {
-  const fs::path dir = temp_folder("cli");
+  const fs::path dir = test::temp_folder("render_cli");
   const std::string M = std::string(MSMESH_CLI_PATH) + " ";
   auto q = [&](const char* name) { return "'" + (dir / name).string() + "'"; };
-  ASSERT_EQ(run(M + "shape fandisk --resolution 4 -o " + q("clean.obj")).status, 0);
-  ASSERT_EQ(run(M + "noise " + q("clean.obj") + " -o " + q("noisy.obj") + " --sigma 0.3 --seed 7").status, 0);
-  CliRun r = run(M + "denoise " + q("noisy.obj") + " -o " + q("den.obj") + " --truth " + q("clean.obj") +
+  ASSERT_EQ(test::run_command(M + "shape fandisk --resolution 4 -o " + q("clean.obj")).status, 0);
+  ASSERT_EQ(test::run_command(M + "noise " + q("clean.obj") + " -o " + q("noisy.obj") + " --sigma 0.3 --seed 7").status, 0);
+  test::CliRun r = test::run_command(M + "denoise " + q("noisy.obj") + " -o " + q("den.obj") + " --truth " + q("clean.obj") +
                  " --save-field " + q("field.txt") + " --report " + q("report.html"));
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("report written to"), std::string::npos) << r.out;
@@ -457,32 +286,32 @@ TEST(RenderCli, RenderCompareAndReport) {
   for (const std::string& args : std::vector<std::string>{"--color none --view front --size 120x90 --feature-edges 30",
                                  "--color error --truth " + q("clean.obj") + " --size 200x150",
                                  "--color field --field " + q("field.txt") + " --size 200x150 --perspective"}) {
-    r = run(M + "render " + q("den.obj") + " -o " + q("r.png") + " " + args);
+    r = test::run_command(M + "render " + q("den.obj") + " -o " + q("r.png") + " " + args);
     ASSERT_EQ(r.status, 0) << args << "\n" << r.out;
-    const std::string png = read_file(dir / "r.png");
+    const std::string png = test::read_bytes(dir / "r.png");
     ASSERT_GT(png.size(), 100u);
     EXPECT_EQ(png.substr(1, 3), "PNG");
   }
-  r = run(M + "render " + q("den.obj") + " -o " + q("r.png") + " --color error");
+  r = test::run_command(M + "render " + q("den.obj") + " -o " + q("r.png") + " --color error");
   EXPECT_NE(r.status, 0) << "--color error without --truth must fail";
-  r = run(M + "render " + q("den.obj") + " -o " + q("r.png") + " --size 12by3");
+  r = test::run_command(M + "render " + q("den.obj") + " -o " + q("r.png") + " --size 12by3");
   EXPECT_NE(r.status, 0);
 
-  r = run(M + "compare " + q("noisy.obj") + " " + q("den.obj") + " " + q("clean.obj") + " --truth " + q("clean.obj") +
+  r = test::run_command(M + "compare " + q("noisy.obj") + " " + q("den.obj") + " " + q("clean.obj") + " --truth " + q("clean.obj") +
           " --captions 'noisy,denoised,truth' --size 150x120 --color error -o " + q("sheet.png"));
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("denoised: MSAE"), std::string::npos) << r.out;
-  const std::string sheet = read_file(dir / "sheet.png");
+  const std::string sheet = test::read_bytes(dir / "sheet.png");
   ASSERT_GT(sheet.size(), 24u);
   auto be32 = [&](size_t i) {
     return (std::uint32_t(std::uint8_t(sheet[i])) << 24) | (std::uint32_t(std::uint8_t(sheet[i + 1])) << 16) |
            (std::uint32_t(std::uint8_t(sheet[i + 2])) << 8) | std::uint8_t(sheet[i + 3]);
   };
   EXPECT_GE(be32(16), 3u * 150u) << "three panels side by side";
-  r = run(M + "compare " + q("noisy.obj") + " " + q("den.obj") + " --captions 'only one' -o " + q("sheet.png"));
+  r = test::run_command(M + "compare " + q("noisy.obj") + " " + q("den.obj") + " --captions 'only one' -o " + q("sheet.png"));
   EXPECT_NE(r.status, 0) << "captions must match the meshes";
 
-  const std::string html = read_file(dir / "report.html");
+  const std::string html = test::read_bytes(dir / "report.html");
   for (const char* part : {"<!DOCTYPE html>", "id=\"msmesh-data\"", "\"name\":\"input\"", "\"name\":\"result\"",
                            "\"name\":\"truth\"", "MSAE (x1e-3)", "<svg class=\"plot\"", "Three.js Authors"})
     EXPECT_NE(html.find(part), std::string::npos) << part;
@@ -493,25 +322,25 @@ TEST(RenderCli, RenderCompareAndReport) {
 }
 
 TEST(RenderCli, SegmentAndInpaintReports) {
-  const fs::path dir = temp_folder("reports");
+  const fs::path dir = test::temp_folder("render_reports");
   const std::string M = std::string(MSMESH_CLI_PATH) + " ";
   auto q = [&](const char* name) { return "'" + (dir / name).string() + "'"; };
-  ASSERT_EQ(run(M + "shape fandisk --resolution 6 -o " + q("clean.obj")).status, 0);
-  CliRun r = run(M + "segment " + q("clean.obj") + " -o " + q("seg.ply") + " --labels " + q("labels.txt") +
+  ASSERT_EQ(test::run_command(M + "shape fandisk --resolution 6 -o " + q("clean.obj")).status, 0);
+  test::CliRun r = test::run_command(M + "segment " + q("clean.obj") + " -o " + q("seg.ply") + " --labels " + q("labels.txt") +
                  " --report " + q("seg.html") + " -q");
   ASSERT_EQ(r.status, 0) << r.out;
-  std::string html = read_file(dir / "seg.html");
+  std::string html = test::read_bytes(dir / "seg.html");
   for (const char* part : {"\"labels\":\"", "\"field\":\"", "\"initial_color\":\"labels\"", "<h2>Segments</h2>"})
     EXPECT_NE(html.find(part), std::string::npos) << part;
-  r = run(M + "render " + q("clean.obj") + " --color labels --labels " + q("labels.txt") + " --size 160x120 -o " +
+  r = test::run_command(M + "render " + q("clean.obj") + " --color labels --labels " + q("labels.txt") + " --size 160x120 -o " +
           q("labels.png"));
   EXPECT_EQ(r.status, 0) << r.out;
 
-  ASSERT_EQ(run(M + "holes " + q("clean.obj") + " -o " + q("holes.obj") + " --count 2 --seed 3").status, 0);
-  r = run(M + "inpaint " + q("holes.obj") + " -o " + q("filled.obj") + " --truth " + q("clean.obj") + " --report " +
+  ASSERT_EQ(test::run_command(M + "holes " + q("clean.obj") + " -o " + q("holes.obj") + " --count 2 --seed 3").status, 0);
+  r = test::run_command(M + "inpaint " + q("holes.obj") + " -o " + q("filled.obj") + " --truth " + q("clean.obj") + " --report " +
           q("inpaint.html") + " -q");
   ASSERT_EQ(r.status, 0) << r.out;
-  html = read_file(dir / "inpaint.html");
+  html = test::read_bytes(dir / "inpaint.html");
   for (const char* part : {"\"highlight\":\"", "<h2>Holes</h2>", "Filled region against the ground truth"})
     EXPECT_NE(html.find(part), std::string::npos) << part;
   fs::remove_all(dir);

@@ -5,58 +5,19 @@
 // beyond the paper (piecewise-smooth completion of the normals, a convex vertex placement,
 // crease-aligning edge flips); docs/inpainting.md says why and what each is worth.
 //
-// Also here: a hole puncher for tests and benchmarks, and the error figures of an inpainting
-// result against a ground truth.
+// Hole finding is in holes.h, the error figures of an inpainting result against a ground truth
+// in metrics.h (inpaint_errors), the hole puncher for tests and benchmarks in punch_holes.h.
 #pragma once
 #include <Eigen/Core>
-#include <cstdint>
 #include <string>
 #include <vector>
 
+#include "msmesh/holes.h"
 #include "msmesh/normal_filter.h"
 #include "msmesh/progress.h"
 #include "msmesh/vertex_update.h"
 
 namespace msmesh {
-
-// ---------------------------------------------------------------------------------------
-// Hole finding
-// ---------------------------------------------------------------------------------------
-
-/// One boundary loop of a mesh.
-struct Hole {
-  /// The boundary vertices in order, walking each boundary edge opposite to the direction in
-  /// which its face walks it (so the hole lies to the left seen from outside). For a boundary
-  /// that touches itself the walk visits the touching vertices more than once.
-  std::vector<int> loop;
-  int edges = 0;          ///< number of boundary edges
-  double diameter = 0;    ///< largest distance between two loop vertices, in mean edge lengths
-  double length = 0;      ///< sum of the boundary edge lengths, in mean edge lengths
-  /// Area the loop spans, in squared mean edge lengths: the norm of its vector area
-  /// ½ Σ p_k × p_{k+1} (exact for a planar loop, the projected area of a bent one).
-  double spanned_area = 0;
-  int component = 0;      ///< connected component of faces it borders
-  /// The outer boundary of an open surface (see find_holes): never filled unless asked.
-  bool outer_boundary = false;
-  /// False when the boundary touches itself: some vertex has more than two boundary edges.
-  bool simple = true;
-  int touching_vertex = -1;  ///< a vertex where a non-simple boundary touches itself
-};
-
-/// The boundary loops of (V, F) (#V by 3, #F by 3), in a deterministic order (by smallest
-/// vertex index). Edges with exactly one incident face are boundary edges; non-manifold edges
-/// (three or more faces) are not.
-///
-/// Outer-boundary rule: within each connected component of faces, the boundary loop with the
-/// largest diameter (ties: more edges) is the component's outer boundary — the rim of an open
-/// scan or sheet — when the area it spans is at least a quarter of the component's surface
-/// area. A flat sheet's rim spans all of it, a hemispherical scan's rim half; a hole in a
-/// closed surface spans a small part of what surrounds it (a cube missing one whole face: 1/5).
-std::vector<Hole> find_holes(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F);
-
-// ---------------------------------------------------------------------------------------
-// Inpainting
-// ---------------------------------------------------------------------------------------
 
 struct InpaintOptions {
   // --- which holes ---
@@ -174,53 +135,5 @@ struct InpaintResult {
 /// SolverError, or Cancelled when `progress` returns false.
 InpaintResult inpaint(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const InpaintOptions& options = {},
                       const ProgressCallback& progress = {});
-
-// ---------------------------------------------------------------------------------------
-// Error figures against a ground truth
-// ---------------------------------------------------------------------------------------
-
-/// Distances of the filled region to the ground truth, relative to the truth's bounding-box
-/// diagonal. Two sets of points count, with t = 0.1 mean edge length of the input:
-///  - truth vertices farther than t from every input vertex (the missing surface): their
-///    distance to the result's surface;
-///  - result vertices farther than t from every input vertex (the new surface): their
-///    distance to the truth's surface.
-struct InpaintErrors {
-  Eigen::Index points = 0;   ///< number of distances measured (both sets)
-  double max = 0, mean = 0, rms = 0;
-  Eigen::Index new_faces = 0;
-  /// Mean angle (degrees) between each new face's normal and the normal of the truth face
-  /// closest to its barycentre; 0 when there are no new faces.
-  double mean_normal_error_deg = 0;
-};
-
-/// new_faces: #F_result flags of the faces the inpainting added (empty: the faces beyond the
-/// input's #F). Throws InvalidInput for invalid meshes or a truth without faces.
-InpaintErrors inpaint_errors(const Eigen::MatrixXd& V_input, const Eigen::MatrixXi& F_input,
-                             const Eigen::MatrixXd& V_result, const Eigen::MatrixXi& F_result,
-                             const std::vector<bool>& new_faces, const Eigen::MatrixXd& V_truth,
-                             const Eigen::MatrixXi& F_truth);
-
-// ---------------------------------------------------------------------------------------
-// Hole puncher (tests, benchmarks)
-// ---------------------------------------------------------------------------------------
-
-struct PunchResult {
-  Eigen::MatrixXd V;   ///< #V' by 3 the remaining vertices (unreferenced ones removed)
-  Eigen::MatrixXi F;   ///< #F' by 3 the remaining faces, in their input order, re-indexed
-  Eigen::VectorXi vertex_map;      ///< #V' : input row of each output vertex
-  Eigen::VectorXi old_to_new;      ///< #V  : output row of each input vertex, -1 when removed
-  std::vector<int> centers;        ///< input vertex at the centre of each hole punched
-  int punched = 0;                 ///< holes made (fewer than asked when no room was left)
-};
-
-/// Punches `count` holes into (V, F): geodesic disks (Dijkstra along edges) of `radius` mean
-/// edge lengths around random centre vertices (seeded, deterministic). Every face touching a
-/// disk vertex is removed. Disks are grown where needed so that each hole's boundary is a
-/// simple loop, and kept apart from each other and from existing boundaries. With
-/// `on_features`, centres are vertices on sharp edges (dihedral angle > 60°), corners included.
-/// Throws InvalidInput for bad arguments.
-PunchResult punch_holes(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, int count, double radius,
-                        std::uint64_t seed, bool on_features = false);
 
 }  // namespace msmesh

@@ -2,6 +2,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <memory>
+#include <vector>
 
 namespace msmesh {
 
@@ -63,5 +64,31 @@ struct Evaluation {
 
 Evaluation evaluate(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& V_truth,
                     const Eigen::MatrixXi& F_truth);
+
+// ---------------------------------------------------------------------------------------
+// Inpainting: error figures of a filled mesh against a ground truth
+// ---------------------------------------------------------------------------------------
+
+/// Distances of the filled region to the ground truth, relative to the truth's bounding-box
+/// diagonal. Two sets of points count, with t = 0.1 mean edge length of the input:
+///  - truth vertices farther than t from every input vertex (the missing surface): their
+///    distance to the result's surface;
+///  - result vertices farther than t from every input vertex (the new surface): their
+///    distance to the truth's surface.
+struct InpaintErrors {
+  Eigen::Index points = 0;   ///< number of distances measured (both sets)
+  double max = 0, mean = 0, rms = 0;
+  Eigen::Index new_faces = 0;
+  /// Mean angle (degrees) between each new face's normal and the normal of the truth face
+  /// closest to its barycentre; 0 when there are no new faces.
+  double mean_normal_error_deg = 0;
+};
+
+/// new_faces: #F_result flags of the faces the inpainting added (empty: the faces beyond the
+/// input's #F). Throws InvalidInput for invalid meshes or a truth without faces.
+InpaintErrors inpaint_errors(const Eigen::MatrixXd& V_input, const Eigen::MatrixXi& F_input,
+                             const Eigen::MatrixXd& V_result, const Eigen::MatrixXi& F_result,
+                             const std::vector<bool>& new_faces, const Eigen::MatrixXd& V_truth,
+                             const Eigen::MatrixXi& F_truth);
 
 }  // namespace msmesh

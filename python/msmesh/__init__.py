@@ -469,7 +469,7 @@ if hasattr(_core, "inpaint"):
 
     def inpaint_errors(V_input, F_input, V_result, F_result, V_truth, F_truth, new_faces=None):
         """Error figures of an inpainting result against a ground truth (distances relative
-        to the truth's bounding-box diagonal; see inpaint.h). new_faces: (#F_result,) bools, or
+        to the truth's bounding-box diagonal; see metrics.h). new_faces: (#F_result,) bools, or
         None for the faces beyond the input's."""
         V_input, F_input = _checks.mesh(V_input, F_input, prefix="input ")
         V_result, F_result = _checks.mesh(V_result, F_result, prefix="result ")

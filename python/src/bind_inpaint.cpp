@@ -2,7 +2,10 @@
 #include <cstdint>
 
 #include "bindings.h"
+#include "msmesh/holes.h"
 #include "msmesh/inpaint.h"
+#include "msmesh/metrics.h"
+#include "msmesh/punch_holes.h"
 
 namespace py = pybind11;
 

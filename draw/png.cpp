@@ -1,13 +1,14 @@
-// PNG encoding of render.h (RFC 2083 / ISO 15948 with zlib RFC 1950 and deflate RFC 1951):
+// PNG encoding (png.h): RFC 2083 / ISO 15948 with zlib RFC 1950 and deflate RFC 1951,
 // per-row adaptive filters, LZ77 with hash chains, one deflate block with the fixed Huffman
 // codes. No dependency; rendered figures (large flat areas) compress well with it.
+#include "msmesh/png.h"
+
 #include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <string>
 
 #include "msmesh/errors.h"
-#include "msmesh/render.h"
 
 namespace msmesh {
 namespace {

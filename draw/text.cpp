@@ -1,33 +1,14 @@
-// 2D drawing of render.h: rectangles, a 5×7 bitmap font, colour bars, panel layout.
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
+// Text (text.h): the 5×7 bitmap font.
+#include "msmesh/text.h"
 
-#include "msmesh/errors.h"
-#include "msmesh/render.h"
+#include <algorithm>
+#include <string>
+#include <vector>
 
 namespace msmesh {
 
-void fill_rect(Image& image, int x, int y, int w, int h, const Eigen::Vector3d& color) {
-  const int xa = std::max(0, x), xb = std::min(image.width, x + std::max(0, w));
-  const int ya = std::max(0, y), yb = std::min(image.height, y + std::max(0, h));
-  for (int j = ya; j < yb; ++j)
-    for (int i = xa; i < xb; ++i) image.set(i, j, color);
-}
-
-void blit(Image& dst, const Image& src, int x, int y) {
-  for (int j = std::max(0, -y); j < src.height && y + j < dst.height; ++j)
-    for (int i = std::max(0, -x); i < src.width && x + i < dst.width; ++i) {
-      const size_t s = (static_cast<size_t>(j) * src.width + i) * 3;
-      const size_t d = (static_cast<size_t>(y + j) * dst.width + (x + i)) * 3;
-      std::copy(src.rgb.begin() + s, src.rgb.begin() + s + 3, dst.rgb.begin() + d);
-    }
-}
-
-// ---------------------------------------------------------------------------------------
 // Font: the classic 5×7 LCD font, one byte per column, bit 0 = top row (rows 0–7; row 7 is
 // only used by descenders). Printable ASCII 32–126, then "°" and "×".
-// ---------------------------------------------------------------------------------------
 
 namespace {
 
@@ -174,98 +155,6 @@ void draw_text(Image& image, int x, int y, const std::string& text, const Eigen:
         if (kFont[g][col] & (1u << row)) fill_rect(image, pen + col * scale, y + row * scale, scale, scale, color);
     pen += 6 * scale;
   }
-}
-
-// ---------------------------------------------------------------------------------------
-// Colour bar and layout
-// ---------------------------------------------------------------------------------------
-
-std::string format_tick(double value) {
-  if (!std::isfinite(value)) return value > 0 ? "inf" : (value < 0 ? "-inf" : "nan");
-  if (value == 0) return "0";
-  char buf[32];
-  const double a = std::abs(value);
-  if (a >= 1e-3 && a < 1e5) {
-    // 3 significant digits, fixed notation, trailing zeros dropped.
-    const int digits = std::max(0, 2 - static_cast<int>(std::floor(std::log10(a))));
-    std::snprintf(buf, sizeof buf, "%.*f", digits, value);
-    std::string s = buf;
-    if (s.find('.') != std::string::npos) {
-      while (!s.empty() && s.back() == '0') s.pop_back();
-      if (!s.empty() && s.back() == '.') s.pop_back();
-    }
-    return s == "-0" ? "0" : s;
-  }
-  std::snprintf(buf, sizeof buf, "%.2g", value);
-  return buf;
-}
-
-void draw_color_bar(Image& image, int x, int y, int w, int h, const ColorBar& bar, int scale) {
-  if (!bar.map) throw InvalidInput("draw_color_bar: the colour bar has no colour map");
-  scale = std::max(1, scale);
-  const Eigen::Vector3d ink(0.15, 0.15, 0.15);
-  const int th = text_height(scale);
-  int bx = x;
-  if (!bar.title.empty()) {
-    draw_text(image, x, y + std::max(0, (h - th) / 2 - 2 * scale), bar.title, ink, scale);
-    bx = x + text_width(bar.title, scale) + 6 * scale;
-  }
-  // Room for half a label on either end.
-  const std::string lo_label = format_tick(bar.min);
-  const std::string hi_label = (bar.max_is_clamped ? ">=" : "") + format_tick(bar.max);
-  const int pad = std::max(text_width(lo_label, scale), text_width(hi_label, scale)) / 2 + scale;
-  const int bar_x = bx + pad, bar_w = std::max(2, x + w - pad - bar_x);
-  const int bar_h = std::max(4 * scale, h - th - 5 * scale);
-  const int bar_y = y;
-  for (int i = 0; i < bar_w; ++i) {
-    const Eigen::Vector3d c = bar.map(bar_w > 1 ? double(i) / (bar_w - 1) : 0.0);
-    fill_rect(image, bar_x + i, bar_y, 1, bar_h, c);
-  }
-  // Frame.
-  fill_rect(image, bar_x - 1, bar_y - 1, bar_w + 2, 1, ink);
-  fill_rect(image, bar_x - 1, bar_y + bar_h, bar_w + 2, 1, ink);
-  fill_rect(image, bar_x - 1, bar_y - 1, 1, bar_h + 2, ink);
-  fill_rect(image, bar_x + bar_w, bar_y - 1, 1, bar_h + 2, ink);
-  const int ticks = std::max(2, bar.ticks);
-  for (int t = 0; t < ticks; ++t) {
-    const double u = double(t) / (ticks - 1);
-    const int tx = bar_x + static_cast<int>(std::lround(u * (bar_w - 1)));
-    fill_rect(image, tx, bar_y + bar_h, std::max(1, scale / 2 + 1), 2 * scale + 1, ink);
-    std::string label = format_tick(bar.min + u * (bar.max - bar.min));
-    if (t == ticks - 1 && bar.max_is_clamped) label = hi_label;
-    const int lw = text_width(label, scale);
-    draw_text(image, tx - lw / 2, bar_y + bar_h + 3 * scale + 1, label, ink, scale);
-  }
-}
-
-Image hstack(const std::vector<Image>& panels, int gap, const Eigen::Vector3d& background) {
-  int w = 0, h = 0;
-  for (size_t i = 0; i < panels.size(); ++i) {
-    w += panels[i].width + (i ? gap : 0);
-    h = std::max(h, panels[i].height);
-  }
-  Image out(w, h, background);
-  int x = 0;
-  for (const Image& p : panels) {
-    blit(out, p, x, 0);
-    x += p.width + gap;
-  }
-  return out;
-}
-
-Image vstack(const std::vector<Image>& panels, int gap, const Eigen::Vector3d& background) {
-  int w = 0, h = 0;
-  for (size_t i = 0; i < panels.size(); ++i) {
-    h += panels[i].height + (i ? gap : 0);
-    w = std::max(w, panels[i].width);
-  }
-  Image out(w, h, background);
-  int y = 0;
-  for (const Image& p : panels) {
-    blit(out, p, 0, y);
-    y += p.height + gap;
-  }
-  return out;
 }
 
 }  // namespace msmesh
