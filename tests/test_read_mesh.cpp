@@ -424,6 +424,7 @@ TEST(FuzzRegressions, CrashInputsAreRefusedOrReadValid) {
       }
     }
   }
+  EXPECT_GT(count, 0) << "no crash inputs found in " << (kSource / "tests/data/fuzz_regressions");
   RecordProperty("inputs", count);
 }
 
