@@ -1,5 +1,5 @@
 // What a successfully read mesh must satisfy, checked by the fuzz targets (fuzz_reader.cpp)
-// and by the regression test of their crash inputs (tests/test_fuzz_regressions.cpp).
+// and by the regression tests of their inputs (FuzzRegressions.* in tests/test_read_mesh.cpp).
 #pragma once
 #include <Eigen/Core>
 #include <cmath>

@@ -13,7 +13,7 @@
 #include <random>
 
 #include "msmesh/errors.h"
-#include "msmesh/io.h"
+#include "msmesh/atomic_file.h"
 
 namespace msmesh {
 namespace {

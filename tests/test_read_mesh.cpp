@@ -1,20 +1,27 @@
-// Reading and writing meshes: round trips through every format, triangulation and welding on
-// read, and one test per kind of broken file (each must throw IoError naming the file).
+// Reading meshes (msmesh/read_mesh.h): triangulation and welding on read, the public meshes
+// in each format, one test per kind of broken file (each must throw IoError naming the file),
+// and the fuzzers' inputs as regression tests (fuzz/, scripts/fuzz): every kept crash input
+// (tests/data/fuzz_regressions/<format>/) must be refused with IoError / InvalidInput or read
+// as a valid mesh, never crash; every seed of the corpus (fuzz/corpus/<format>/, valid small
+// meshes written by fuzz/make_corpus.py) must read as a valid mesh. Round trips through the
+// writers are in test_write_mesh.cpp.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <atomic>
-#include <cmath>
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
-#include <random>
-#include <sstream>
+#include <string>
+#include <vector>
 
+#include "../fuzz/mesh_check.h"
 #include "msmesh/errors.h"
-#include "msmesh/io.h"
+#include "msmesh/read_mesh.h"
+#include "msmesh/write_mesh.h"
 #include "test_helpers.h"
 
 using namespace msmesh;
@@ -24,15 +31,6 @@ using msmesh::test::TempDir;
 namespace fs = std::filesystem;
 
 namespace {
-
-/// A grid with coordinates that need all 17 significant digits.
-Mesh awkward_mesh() {
-  Mesh m = test::grid(4, 0.3);
-  std::mt19937 gen(7);
-  std::uniform_real_distribution<double> u(-1e-3, 1e-3);
-  for (Eigen::Index i = 0; i < m.V.size(); ++i) m.V(i) = m.V(i) * 1.2345678901234567 + u(gen) + 1.0 / 3.0;
-  return m;
-}
 
 /// Expects read_mesh(path) to throw IoError whose message names the file and contains `part`.
 void expect_read_error(const std::string& path, const std::string& part = "") {
@@ -72,57 +70,26 @@ std::string binary_stl(const std::vector<std::array<float, 9>>& tris, const std:
   return s;
 }
 
+const fs::path kSource = MSMESH_SOURCE_DIR;  // not __FILE__: ccache may make it relative
+const char* const kFormats[] = {"obj", "off", "ply", "stl"};
+
+std::vector<fs::path> files_in(const fs::path& dir) {
+  std::vector<fs::path> files;
+  if (fs::is_directory(dir))
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.is_regular_file() && e.path().extension() != ".md") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::string bytes_of(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
 }  // namespace
 
-// ---- round trips ------------------------------------------------------------------------------
-
-TEST(IoRoundTrip, EveryFormatKeepsVerticesAndFaces) {
-  TempDir dir;
-  const Mesh m = awkward_mesh();
-  struct Case {
-    std::string name;
-    bool binary;
-  };
-  for (const Case& c : {Case{"m.obj", false}, Case{"m.off", false}, Case{"ascii.ply", false}, Case{"binary.ply", true}}) {
-    SCOPED_TRACE(c.name);
-    const std::string path = dir.file(c.name);
-    write_mesh(path, m, WriteOptions{c.binary});
-    Eigen::Index dropped = -1;
-    const Mesh r = read_mesh(path, &dropped);
-    EXPECT_EQ(dropped, 0);
-    ASSERT_EQ(r.V.rows(), m.V.rows());
-    ASSERT_EQ(r.F.rows(), m.F.rows());
-    EXPECT_LE((r.V - m.V).cwiseAbs().maxCoeff(), 1e-12);
-    EXPECT_TRUE(r.F == m.F);
-  }
-  // STL stores float32 corners per face; the reader welds equal positions back together.
-  for (const Case& c : {Case{"ascii.stl", false}, Case{"binary.stl", true}}) {
-    SCOPED_TRACE(c.name);
-    const std::string path = dir.file(c.name);
-    write_mesh(path, m, WriteOptions{c.binary});
-    const Mesh r = read_mesh(path);
-    ASSERT_EQ(r.V.rows(), m.V.rows());
-    ASSERT_EQ(r.F.rows(), m.F.rows());
-    const double tol = c.binary ? 4 * std::numeric_limits<float>::epsilon() * m.V.cwiseAbs().maxCoeff() : 1e-12;
-    for (Eigen::Index f = 0; f < m.F.rows(); ++f)
-      for (int k = 0; k < 3; ++k)
-        EXPECT_LE((r.V.row(r.F(f, k)) - m.V.row(m.F(f, k))).cwiseAbs().maxCoeff(), tol) << "face " << f;
-  }
-}
-
-TEST(IoRoundTrip, VertexColoursThroughPlyAndOff) {
-  TempDir dir;
-  Mesh m = test::tetrahedron();
-  m.vertex_colors.resize(4, 3);
-  m.vertex_colors << 1, 0, 0, 0, 1, 0, 0, 0, 1, 0.2, 0.4, 0.6;
-  for (const std::string name : {"c.ply", "c.off"}) {
-    SCOPED_TRACE(name);
-    write_mesh(dir.file(name), m);
-    const Mesh r = read_mesh(dir.file(name));
-    ASSERT_EQ(r.vertex_colors.rows(), 4);
-    EXPECT_LE((r.vertex_colors - m.vertex_colors).cwiseAbs().maxCoeff(), 0.5 / 255 + 1e-12);
-  }
-}
+// ---- reading ------------------------------------------------------------------------------------
 
 TEST(IoRead, QuadObjIsTriangulated) {
   TempDir dir;
@@ -152,7 +119,6 @@ TEST(IoRead, UpperCaseExtension) {
   const std::string path = dir.file("TET.OBJ");
   write_mesh(path, test::tetrahedron());
   EXPECT_EQ(read_mesh(path).F.rows(), 4);
-  EXPECT_EQ(mesh_format_from_path("a/b.PlY"), "ply");
 }
 
 TEST(IoRead, StlTrianglesAreWelded) {
@@ -193,7 +159,7 @@ TEST(IoRead, CrLfLineEndingsAndComments) {
   EXPECT_EQ(read_mesh(dir.file("comments.off")).F.rows(), 1);
 }
 
-// ---- broken files ------------------------------------------------------------------------------
+// ---- broken files -------------------------------------------------------------------------------
 
 TEST(IoErrors, MissingFile) {
   TempDir dir;
@@ -412,120 +378,7 @@ TEST(IoErrors, DirectoryInsteadOfFile) {
   expect_read_error(dir.file("folder.obj"), "directory");
 }
 
-// ---- writing -----------------------------------------------------------------------------------
-
-TEST(IoWrite, FailedWriteLeavesNoFile) {
-  TempDir dir;
-  const std::string path = dir.file("missing_folder/out.ply");
-  EXPECT_THROW(write_mesh(path, test::tetrahedron()), IoError);
-  EXPECT_FALSE(fs::exists(path));
-  try {
-    write_mesh(path, test::tetrahedron());
-  } catch (const IoError& e) {
-    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
-  }
-  EXPECT_THROW(write_mesh(dir.file("out.xyz"), test::tetrahedron()), IoError);
-  EXPECT_TRUE(dir.listing().empty());
-}
-
-TEST(IoWrite, InvalidMeshIsRefusedBeforeTouchingTheFile) {
-  TempDir dir;
-  Mesh m = test::tetrahedron();
-  m.F(0, 0) = 9;
-  EXPECT_THROW(write_mesh(dir.file("bad.obj"), m), InvalidInput);
-  m = test::tetrahedron();
-  m.V(1, 1) = std::nan("");
-  EXPECT_THROW(write_mesh(dir.file("bad.obj"), m), InvalidInput);
-  EXPECT_TRUE(dir.listing().empty());
-}
-
-TEST(IoWrite, NoTemporaryFilesAreLeftBehind) {
-  TempDir dir;
-  const Mesh m = test::grid(3);
-  for (const std::string name : {"a.obj", "a.off", "a.ply", "a.stl"}) write_mesh(dir.file(name), m);
-  write_text_file(dir.file("notes.txt"), "hello\n");
-  write_ply_face_colors(dir.file("colors.ply"), m, Eigen::MatrixXd::Constant(m.F.rows(), 3, 0.5));
-  write_polylines(dir.file("lines.obj"), m.V, {{0, 1, 2}});
-  // Overwriting an existing file goes through a temporary too.
-  write_mesh(dir.file("a.obj"), test::tetrahedron());
-  EXPECT_EQ(read_mesh(dir.file("a.obj")).F.rows(), 4);
-  const std::vector<std::string> expected = {"a.obj", "a.off", "a.ply", "a.stl", "colors.ply", "lines.obj", "notes.txt"};
-  EXPECT_EQ(dir.listing(), expected);
-}
-
-TEST(IoWrite, ExceptionWhileWritingKeepsTheOldFile) {
-  TempDir dir;
-  const std::string path = dir.file("keep.txt");
-  write_text_file(path, "old");
-  EXPECT_THROW(write_file_atomically(path,
-                                     [](std::ostream& out) {
-                                       out << "partial";
-                                       throw InvalidInput("stop");
-                                     }),
-               InvalidInput);
-  EXPECT_EQ(read_bytes(path), "old");
-  EXPECT_EQ(dir.listing(), std::vector<std::string>{"keep.txt"});
-  EXPECT_THROW(write_text_file(dir.path().string(), "x"), IoError);  // a folder
-}
-
-TEST(IoWrite, FaceColoursPly) {
-  TempDir dir;
-  const Mesh m = test::tetrahedron();
-  Eigen::MatrixXd C(4, 3);
-  C << 1, 0, 0, 0, 1, 0, 0, 0, 1, 0.5, 0.5, 0.5;
-  for (bool binary : {true, false}) {
-    const std::string path = dir.file(binary ? "b.ply" : "a.ply");
-    write_ply_face_colors(path, m, C, binary);
-    const std::string bytes = read_bytes(path);
-    EXPECT_NE(bytes.find("element face 4\nproperty list uchar int vertex_indices\nproperty uchar red\n"), std::string::npos);
-    if (!binary) EXPECT_NE(bytes.find("3 1 3 2 128 128 128\n"), std::string::npos);
-    const Mesh r = read_mesh(path);
-    EXPECT_TRUE(r.F == m.F);
-  }
-  EXPECT_THROW(write_ply_face_colors(dir.file("c.ply"), m, Eigen::MatrixXd::Zero(3, 3)), InvalidInput);
-}
-
-TEST(IoWrite, Polylines) {
-  TempDir dir;
-  Eigen::MatrixXd P(4, 3);
-  P << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0.5, 0.25, 0.125;
-  write_polylines(dir.file("l.obj"), P, {{0, 1, 2}, {2, 3}});
-  EXPECT_EQ(read_bytes(dir.file("l.obj")),
-            "# written by msmesh\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0.5 0.25 0.125\nl 1 2 3\nl 3 4\n");
-  write_polylines(dir.file("l.ply"), P, {{0, 1, 2}, {2, 3}});
-  const std::string ply = read_bytes(dir.file("l.ply"));
-  EXPECT_NE(ply.find("element edge 3\nproperty int vertex1\nproperty int vertex2\nend_header\n"), std::string::npos);
-  EXPECT_NE(ply.find("0 1\n1 2\n2 3\n"), std::string::npos);
-  EXPECT_THROW(write_polylines(dir.file("l.obj"), P, {{0, 4}}), InvalidInput);
-  EXPECT_THROW(write_polylines(dir.file("l.stl"), P, {{0, 1}}), IoError);
-}
-
-// ---- public meshes -----------------------------------------------------------------------------
-
-TEST(IoShared, SameMeshThroughEveryFormat) {
-  MSMESH_REQUIRE_SHARED(path, "gnf_zhang2015/fandisk/clean.obj");
-  TempDir dir;
-  const Mesh m = read_mesh(path);
-  EXPECT_EQ(m.V.rows(), 6475);
-  EXPECT_EQ(m.F.rows(), 12946);
-  for (const std::string name : {"f.off", "f.ply", "f_ascii.ply", "f.obj"}) {
-    SCOPED_TRACE(name);
-    write_mesh(dir.file(name), m, WriteOptions{name != "f_ascii.ply"});
-    const Mesh r = read_mesh(dir.file(name));
-    ASSERT_EQ(r.V.rows(), m.V.rows());
-    EXPECT_EQ((r.V - m.V).cwiseAbs().maxCoeff(), 0.0);  // shortest round-trip digits are exact
-    EXPECT_TRUE(r.F == m.F);
-  }
-  write_mesh(dir.file("f.stl"), m);
-  const Mesh s = read_mesh(dir.file("f.stl"));
-  EXPECT_EQ(s.V.rows(), m.V.rows());
-  ASSERT_EQ(s.F.rows(), m.F.rows());
-  double worst = 0;
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
-    for (int k = 0; k < 3; ++k)
-      worst = std::max(worst, (s.V.row(s.F(f, k)) - m.V.row(m.F(f, k))).cwiseAbs().maxCoeff());
-  EXPECT_LE(worst, 1e-6 * m.V.cwiseAbs().maxCoeff());
-}
+// ---- public meshes ------------------------------------------------------------------------------
 
 TEST(IoShared, ReadsEachFormatOfThePublicMeshes) {
   MSMESH_REQUIRE_SHARED(root, "SOURCES.md");
@@ -554,12 +407,43 @@ TEST(IoShared, ReadsEachFormatOfThePublicMeshes) {
   }
 }
 
-TEST(IoShared, AsciiAndBinaryPlyOfTheBunnyAgree) {
-  MSMESH_REQUIRE_SHARED(path, "stanford_bunny_ply/bunny/bun_zipper.ply");
-  TempDir dir;
-  const Mesh m = read_mesh(path);
-  write_mesh(dir.file("bunny.ply"), m, WriteOptions{true});
-  const Mesh b = read_mesh(dir.file("bunny.ply"));
-  EXPECT_TRUE(b.V == m.V);
-  EXPECT_TRUE(b.F == m.F);
+// ---- the fuzzers' inputs ------------------------------------------------------------------------
+
+TEST(FuzzRegressions, CrashInputsAreRefusedOrReadValid) {
+  int count = 0;
+  for (const char* fmt : kFormats) {
+    for (const fs::path& p : files_in(kSource / "tests/data/fuzz_regressions" / fmt)) {
+      SCOPED_TRACE(p.string());
+      ++count;
+      try {
+        const msmesh::Mesh m = msmesh::read_mesh_from_memory(bytes_of(p), fmt, p.string());
+        EXPECT_EQ(msmesh::fuzz::mesh_problem(m), "");
+      } catch (const msmesh::IoError& e) {
+        EXPECT_NE(std::string(e.what()).find(p.string()), std::string::npos) << e.what();
+      } catch (const msmesh::InvalidInput&) {
+      }
+    }
+  }
+  EXPECT_GT(count, 0) << "no crash inputs found in " << (kSource / "tests/data/fuzz_regressions");
+  RecordProperty("inputs", count);
+}
+
+TEST(FuzzRegressions, SeedCorpusReadsValid) {
+  int count = 0;
+  for (const char* fmt : kFormats) {
+    const auto files = files_in(kSource / "fuzz/corpus" / fmt);
+    EXPECT_GE(files.size(), 4u) << "no seed corpus for " << fmt << " (python3 fuzz/make_corpus.py)";
+    for (const fs::path& p : files) {
+      SCOPED_TRACE(p.string());
+      ++count;
+      try {
+        const msmesh::Mesh m = msmesh::read_mesh_from_memory(bytes_of(p), fmt, p.string());
+        EXPECT_EQ(msmesh::fuzz::mesh_problem(m), "");
+        EXPECT_GE(m.F.rows(), 2);
+      } catch (const msmesh::Error& e) {
+        ADD_FAILURE() << e.what();
+      }
+    }
+  }
+  EXPECT_GT(count, 20);
 }

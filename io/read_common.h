@@ -1,0 +1,145 @@
+// Shared pieces of the mesh readers (internal to msmesh_io): the polygon soup CGAL's readers
+// fill, the file in memory as a stream, and one entry point per format (read_obj.cpp,
+// read_off.cpp, read_ply.cpp, read_stl.cpp); read_mesh.cpp dispatches to them by format and
+// turns the soup into a Mesh.
+//
+// CGAL's readers trust their input more than a command-line tool can, so each format is
+// checked before CGAL sees it (found by reading CGAL 5.5's readers and by fuzzing them under
+// AddressSanitizer); what each reader guards against is listed at the top of its file. The
+// read_*.cpp files are the only translation units that include CGAL's I/O headers. The whole
+// file is read into memory once; CGAL parses it from there.
+#pragma once
+#include <CGAL/IO/Color.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <istream>
+#include <streambuf>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "msmesh/read_mesh.h"
+#include "read_text.h"
+
+// msmesh::io_detail rather than the core's msmesh::detail: names such as Polygon stay apart
+// from the core's internals in one program.
+namespace msmesh::io_detail {
+
+using Kernel = CGAL::Simple_cartesian<double>;
+using Point = Kernel::Point_3;
+
+// ---------------------------------------------------------------------------------------------
+// Polygon soup with a guarded polygon type.
+
+/// Thrown when a reader asks for a polygon with more corners than the file has bytes.
+struct PolygonTooLarge {
+  std::size_t size;
+};
+
+/// Upper bound on the corners of one polygon while a file is read (its size in bytes).
+inline thread_local std::size_t t_polygon_limit = 0;
+
+/// A polygon for CGAL's readers. Up to four corners are stored inline (no allocation per
+/// face); longer polygons spill to the heap. CGAL sizes polygons from counts in the file (OFF)
+/// before reading the indices, so resize refuses counts that cannot be genuine.
+class Polygon {
+ public:
+  using value_type = std::size_t;
+  using iterator = std::size_t*;
+  using const_iterator = const std::size_t*;
+  using size_type = std::size_t;
+  using reference = std::size_t&;
+  using const_reference = const std::size_t&;
+
+  void resize(std::size_t n) {
+    if (n > t_polygon_limit) throw PolygonTooLarge{n};
+    if (n > kInline) {
+      if (size_ <= kInline) heap_.assign(inline_, inline_ + size_);
+      heap_.resize(n);
+    } else if (size_ > kInline) {
+      std::copy(heap_.begin(), heap_.begin() + static_cast<std::ptrdiff_t>(n), inline_);
+      heap_.clear();
+    }
+    for (std::size_t i = size_; i < std::min(n, kInline); ++i) inline_[i] = 0;
+    size_ = n;
+  }
+  void push_back(std::size_t v) {
+    resize(size_ + 1);
+    data()[size_ - 1] = v;
+  }
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  std::size_t* data() { return size_ > kInline ? heap_.data() : inline_; }
+  const std::size_t* data() const { return size_ > kInline ? heap_.data() : inline_; }
+  std::size_t& operator[](std::size_t i) { return data()[i]; }
+  const std::size_t& operator[](std::size_t i) const { return data()[i]; }
+  iterator begin() { return data(); }
+  iterator end() { return data() + size_; }
+  const_iterator begin() const { return data(); }
+  const_iterator end() const { return data() + size_; }
+
+ private:
+  static constexpr std::size_t kInline = 4;
+  std::size_t inline_[kInline] = {0, 0, 0, 0};
+  std::size_t size_ = 0;
+  std::vector<std::size_t> heap_;
+};
+
+struct Soup {
+  std::vector<Point> points;
+  std::vector<Polygon> polygons;
+  std::vector<CGAL::IO::Color> vertex_colors;
+  // Per-vertex attributes CGAL's soup readers drop, read by read_obj_attributes and
+  // read_ply_attributes (empty when absent or not per-vertex).
+  std::vector<std::array<double, 3>> rgb;      ///< OBJ "v x y z r g b" colours in [0,1]
+  std::vector<std::array<double, 2>> uv;
+  std::vector<std::array<double, 3>> normals;
+  ReadNotes notes;
+};
+
+// ---------------------------------------------------------------------------------------------
+// The file in memory, as an std::istream for CGAL.
+
+class MemoryBuf : public std::streambuf {
+ public:
+  MemoryBuf(const char* data, std::size_t size) {
+    char* p = const_cast<char*>(data);  // never written through: no put area
+    setg(p, p, p + size);
+  }
+
+ protected:
+  pos_type seekoff(off_type off, std::ios_base::seekdir dir, std::ios_base::openmode which) override {
+    if (!(which & std::ios_base::in)) return pos_type(off_type(-1));
+    char* base = dir == std::ios_base::beg ? eback() : dir == std::ios_base::cur ? gptr() : egptr();
+    const off_type target = (base - eback()) + off;
+    if (target < 0 || target > egptr() - eback()) return pos_type(off_type(-1));
+    setg(eback(), eback() + target, egptr());
+    return pos_type(target);
+  }
+  pos_type seekpos(pos_type pos, std::ios_base::openmode which) override {
+    return seekoff(off_type(pos), std::ios_base::beg, which);
+  }
+};
+
+class MemoryStream : public std::istream {
+ public:
+  explicit MemoryStream(std::string_view data) : std::istream(nullptr), buf_(data.data(), data.size()) { rdbuf(&buf_); }
+
+ private:
+  MemoryBuf buf_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// One reader per format: parses `data` (the bytes of the file `path`, not empty) into `soup`;
+// throws IoError naming `path` for malformed files (read_mesh.cpp maps CGAL's and the
+// allocator's exceptions to IoError too).
+
+void read_obj(const std::string& path, std::string_view data, Soup& soup);  // read_obj.cpp
+void read_off(const std::string& path, std::string_view data, Soup& soup);  // read_off.cpp
+void read_ply(const std::string& path, std::string_view data, Soup& soup);  // read_ply.cpp
+void read_stl(const std::string& path, std::string_view data, Soup& soup);  // read_stl.cpp
+
+}  // namespace msmesh::io_detail

@@ -1,0 +1,180 @@
+// read_mesh and read_mesh_from_memory: the file read into memory (existence, size and memory
+// checks), the reader of its format (read_obj.cpp, read_off.cpp, read_ply.cpp, read_stl.cpp),
+// the errors of CGAL and the allocator turned into IoError naming the file, and the polygon
+// soup turned into a Mesh (fan triangulation, degenerate triangles dropped, attributes, notes).
+#include <cerrno>
+#include <climits>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <new>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "msmesh/errors.h"
+#include "msmesh/geometry.h"
+#include "msmesh/mesh_format.h"
+#include "msmesh/memory.h"
+#include "msmesh/read_mesh.h"
+#include "read_common.h"
+
+namespace msmesh {
+
+using namespace io_detail;  // the readers' shared pieces (read_common.h)
+
+namespace {
+
+std::string read_whole_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (!fs::exists(st)) throw IoError(path + ": no such file");
+  if (fs::is_directory(st)) throw IoError(path + ": is a directory, not a mesh file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(path + ": cannot open file for reading: " + std::strerror(errno));
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  if (size < 0) throw IoError(path + ": cannot determine the file size");
+  in.seekg(0, std::ios::beg);
+  // The file, CGAL's polygon soup and the mesh: about four times the size of a binary file.
+  check_memory(4.0 * static_cast<double>(size), path + ": reading a " + std::to_string(size) + "-byte file");
+  std::string data(static_cast<std::size_t>(size), '\0');
+  if (size > 0 && !in.read(data.data(), size)) throw IoError(path + ": read error");
+  return data;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Soup to mesh
+
+Mesh soup_to_mesh(const std::string& path, const Soup& soup, Eigen::Index* dropped_degenerate) {
+  const std::size_t nv = soup.points.size();
+  if (nv == 0) throw IoError(path + ": the file contains no vertices");
+  if (nv > static_cast<std::size_t>(INT_MAX)) throw IoError(path + ": too many vertices (" + std::to_string(nv) + ")");
+  Mesh mesh;
+  mesh.V.resize(static_cast<Eigen::Index>(nv), 3);
+  for (std::size_t i = 0; i < nv; ++i)
+    for (int c = 0; c < 3; ++c) mesh.V(static_cast<Eigen::Index>(i), c) = soup.points[i][c];
+
+  std::size_t triangles = 0;
+  for (std::size_t p = 0; p < soup.polygons.size(); ++p) {
+    const Polygon& poly = soup.polygons[p];
+    for (std::size_t idx : poly)
+      if (idx >= nv)
+        throw IoError(path + ": face " + std::to_string(p) + " refers to vertex " + std::to_string(idx) +
+                      " (0-based), out of range [0, " + std::to_string(nv) + ")");
+    if (poly.size() >= 3) triangles += poly.size() - 2;
+  }
+  // Polygons are fan-triangulated; triangles repeating a vertex are dropped.
+  Eigen::Index dropped = 0;
+  mesh.F.resize(static_cast<Eigen::Index>(triangles), 3);
+  Eigen::Index f = 0;
+  for (const Polygon& poly : soup.polygons) {
+    if (poly.size() < 3) {
+      ++dropped;
+      continue;
+    }
+    for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
+      const int a = static_cast<int>(poly[0]), b = static_cast<int>(poly[k]), c = static_cast<int>(poly[k + 1]);
+      if (a == b || b == c || a == c) {
+        ++dropped;
+        continue;
+      }
+      mesh.F.row(f++) << a, b, c;
+    }
+  }
+  mesh.F.conservativeResize(f, 3);
+  if (f == 0)
+    throw IoError(path + (dropped > 0 ? ": all " + std::to_string(dropped) + " faces are degenerate (repeat a vertex)"
+                                      : std::string(": the file contains no faces")));
+  try {
+    validate_mesh(mesh.V, mesh.F, path);
+  } catch (const InvalidInput& e) {
+    throw IoError(e.what());
+  }
+  if (soup.vertex_colors.size() == nv) {
+    mesh.vertex_colors.resize(static_cast<Eigen::Index>(nv), 3);
+    for (std::size_t i = 0; i < nv; ++i) {
+      const auto& col = soup.vertex_colors[i];
+      mesh.vertex_colors.row(static_cast<Eigen::Index>(i)) << col.red() / 255.0, col.green() / 255.0, col.blue() / 255.0;
+    }
+  }
+  auto fill = [&](Eigen::MatrixXd& M, const auto& rows) {
+    if (rows.size() != nv) return;
+    const Eigen::Index cols = static_cast<Eigen::Index>(rows.front().size());
+    M.resize(static_cast<Eigen::Index>(nv), cols);
+    for (std::size_t i = 0; i < nv; ++i)
+      for (Eigen::Index c = 0; c < cols; ++c) M(static_cast<Eigen::Index>(i), c) = rows[i][static_cast<std::size_t>(c)];
+  };
+  if (mesh.vertex_colors.size() == 0) fill(mesh.vertex_colors, soup.rgb);
+  fill(mesh.uv, soup.uv);
+  fill(mesh.vertex_normals, soup.normals);
+  // Normals that are not per-vertex (split at creases) are replaced by recomputed ones.
+  if (soup.notes.had_normals && mesh.vertex_normals.size() == 0 && soup.normals.empty()) {
+    mesh.vertex_normals = vertex_normals(mesh.V, mesh.F);
+    // Coordinates near the double range (e.g. 1e308, found by libFuzzer) overflow the cross
+    // products: no normals rather than non-finite ones.
+    if (!mesh.vertex_normals.allFinite()) mesh.vertex_normals.resize(0, 3);
+  }
+  if (dropped_degenerate) *dropped_degenerate = dropped;
+  return mesh;
+}
+
+}  // namespace
+
+Mesh read_mesh(const std::string& path, Eigen::Index* dropped_degenerate) {
+  ReadNotes notes;
+  Mesh mesh = read_mesh(path, notes);
+  if (dropped_degenerate) *dropped_degenerate = notes.dropped_degenerate;
+  return mesh;
+}
+
+Mesh read_mesh(const std::string& path, ReadNotes& notes) {
+  const std::string format = mesh_format_from_path(path);
+  const std::string data = read_whole_file(path);
+  return read_mesh_from_memory(data, format, path, notes);
+}
+
+Mesh read_mesh_from_memory(std::string_view data, const std::string& format, const std::string& path,
+                           Eigen::Index* dropped_degenerate) {
+  ReadNotes notes;
+  Mesh mesh = read_mesh_from_memory(data, format, path, notes);
+  if (dropped_degenerate) *dropped_degenerate = notes.dropped_degenerate;
+  return mesh;
+}
+
+Mesh read_mesh_from_memory(std::string_view data, const std::string& format, const std::string& path,
+                           ReadNotes& notes) {
+  if (format != "obj" && format != "off" && format != "ply" && format != "stl")
+    throw IoError(path + ": unknown mesh format " + quote_word(format) + "; expected obj, off, ply or stl");
+  if (data.empty()) throw IoError(path + ": empty file");
+  Soup soup;
+  t_polygon_limit = data.size();
+  try {
+    if (format == "obj")
+      read_obj(path, data, soup);
+    else if (format == "off")
+      read_off(path, data, soup);
+    else if (format == "ply")
+      read_ply(path, data, soup);
+    else
+      read_stl(path, data, soup);
+  } catch (const IoError&) {
+    throw;
+  } catch (const PolygonTooLarge& e) {
+    throw IoError(path + ": a face declares " + std::to_string(e.size) +
+                  " vertices, more than the file can hold (corrupt file)");
+  } catch (const std::bad_alloc&) {
+    throw IoError(path + ": out of memory while reading (corrupt counts in the file?)");
+  } catch (const std::length_error&) {
+    throw IoError(path + ": corrupt file (a count in it is out of range)");
+  } catch (const std::exception& e) {
+    throw IoError(path + ": reading failed: " + e.what());
+  }
+  Mesh mesh = soup_to_mesh(path, soup, &notes.dropped_degenerate);
+  notes.had_normals = soup.notes.had_normals;
+  notes.uv_dropped = soup.notes.uv_dropped;
+  return mesh;
+}
+
+}  // namespace msmesh

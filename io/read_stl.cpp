@@ -1,0 +1,75 @@
+// STL reader (CGAL's read_STL behind guards), ascii and binary; CGAL welds the triangle soup
+// into shared vertices. CGAL merges identical points through std::map<Point, int>, which NaN
+// breaks; a binary file whose header starts with "solid" is first parsed as ascii, and a
+// failed ascii parse is retried as binary, which "succeeds" on files shorter than 84 bytes.
+#include <CGAL/IO/STL.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <string_view>
+
+#include "msmesh/errors.h"
+#include "read_common.h"
+
+namespace msmesh::io_detail {
+
+void read_stl(const std::string& path, std::string_view data, Soup& soup) {
+  std::size_t first = 0;
+  while (first < data.size() && std::isspace(static_cast<unsigned char>(data[first]))) ++first;
+  const bool says_solid = data.substr(first, 5) == "solid";
+  bool binary = false;
+  std::uint32_t triangles = 0;
+  if (data.size() >= 84) {
+    std::memcpy(&triangles, data.data() + 80, 4);  // little-endian on the hosts we build for
+    binary = data.size() == 84 + 50 * static_cast<std::uint64_t>(triangles);
+  }
+  if (!binary && !says_solid) {
+    if (data.size() < 84)
+      throw IoError(path + ": not an STL file: no 'solid' keyword and too short (" + std::to_string(data.size()) +
+                    " bytes) for a binary STL");
+    throw IoError(path + ": truncated or corrupt binary STL: the header declares " + std::to_string(triangles) +
+                  " triangles (" + std::to_string(84 + 50 * static_cast<std::uint64_t>(triangles)) +
+                  " bytes), the file has " + std::to_string(data.size()) + " bytes");
+  }
+  std::string patched;
+  if (binary) {
+    // CGAL merges equal points through std::map<Point, int>; NaN breaks its ordering.
+    for (std::uint32_t t = 0; t < triangles; ++t)
+      for (int c = 3; c < 12; ++c) {
+        float x;
+        std::memcpy(&x, data.data() + 84 + 50 * std::size_t(t) + 4 * c, 4);
+        if (!std::isfinite(x))
+          throw IoError(path + ": triangle " + std::to_string(t) + " has a non-finite vertex coordinate");
+      }
+    if (says_solid) {
+      // Many exporters start binary headers with "solid"; CGAL would parse them as ascii
+      // first. Hide the keyword so that it reads the file as binary directly.
+      patched.assign(data);
+      patched[first] = 'S';
+      data = patched;
+    }
+  }
+  if (binary) {
+    soup.polygons.reserve(triangles);
+    soup.points.reserve(triangles / 2 + 3);  // after welding a closed mesh has about F/2 vertices
+  }
+  if (!binary && data.find("endsolid") == std::string_view::npos)
+    throw IoError(path + ": truncated ascii STL (no 'endsolid')");
+  MemoryStream in(data);
+  bool ok = CGAL::IO::read_STL(in, soup.points, soup.polygons, CGAL::parameters::verbose(false));
+  if (ok && !binary) {
+    // When its ascii parse fails CGAL retries as binary, which "succeeds" on files shorter
+    // than a binary header; the facet count tells.
+    std::size_t facets = 0;
+    for (std::size_t at = data.find("endfacet"); at != std::string_view::npos; at = data.find("endfacet", at + 8)) ++facets;
+    ok = facets == soup.polygons.size();
+  }
+  if (!ok)
+    throw IoError(path + (binary ? ": malformed binary STL (CGAL's reader failed)"
+                                 : ": malformed or truncated ascii STL (CGAL's reader failed)"));
+}
+
+}  // namespace msmesh::io_detail

@@ -1,0 +1,108 @@
+// Shared pieces of the mesh writers (internal to msmesh_io): the output buffer every writer
+// formats into, the checks before writing, and one writer per format (write_obj.cpp,
+// write_off.cpp, write_ply.cpp, write_stl.cpp); write_mesh.cpp dispatches to them by format.
+// The writers are short enough to write directly (no CGAL): coordinates are printed with the
+// shortest representation that reads back to the same double (std::to_chars), binary files are
+// little-endian, and everything goes through write_file_atomically so a failed write leaves no
+// partial file.
+#pragma once
+#include <Eigen/Core>
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <ostream>
+#include <string>
+#include <string_view>
+
+#include "msmesh/mesh.h"
+
+// msmesh::io_detail rather than the core's msmesh::detail (see read_common.h).
+namespace msmesh::io_detail {
+
+inline bool host_is_little_endian() {
+  const std::uint16_t one = 1;
+  unsigned char first = 0;
+  std::memcpy(&first, &one, 1);
+  return first == 1;
+}
+
+/// Buffered output: formats into a string and hands it to the stream in large chunks.
+class OutBuffer {
+ public:
+  explicit OutBuffer(std::ostream& out) : out_(out), little_(host_is_little_endian()) { buf_.reserve(kChunk + 512); }
+  OutBuffer(const OutBuffer&) = delete;
+  OutBuffer& operator=(const OutBuffer&) = delete;
+
+  OutBuffer& text(std::string_view s) {
+    buf_.append(s);
+    return maybe_flush();
+  }
+  OutBuffer& ch(char c) {
+    buf_.push_back(c);
+    return maybe_flush();
+  }
+  /// Shortest decimal form that reads back to exactly `x`.
+  OutBuffer& real(double x) {
+    char tmp[32];
+    const auto r = std::to_chars(tmp, tmp + sizeof tmp, x);
+    buf_.append(tmp, r.ptr);
+    return maybe_flush();
+  }
+  OutBuffer& integer(long long v) {
+    char tmp[24];
+    const auto r = std::to_chars(tmp, tmp + sizeof tmp, v);
+    buf_.append(tmp, r.ptr);
+    return maybe_flush();
+  }
+  /// Little-endian binary value.
+  template <class T>
+  OutBuffer& binary(T v) {
+    char b[sizeof(T)];
+    std::memcpy(b, &v, sizeof(T));
+    if (!little_) std::reverse(b, b + sizeof(T));
+    buf_.append(b, sizeof(T));
+    return maybe_flush();
+  }
+  void finish() { flush(); }
+
+ private:
+  static constexpr std::size_t kChunk = std::size_t(1) << 20;
+  OutBuffer& maybe_flush() {
+    if (buf_.size() >= kChunk) flush();
+    return *this;
+  }
+  void flush() {
+    out_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
+    buf_.clear();
+  }
+  std::ostream& out_;
+  bool little_;
+  std::string buf_;
+};
+
+/// Shapes, index ranges and finiteness; writing a file we could not read back is refused.
+/// Throws InvalidInput naming `path` (write_mesh.cpp).
+void check_for_writing(const std::string& path, const Mesh& mesh);
+
+inline std::uint8_t color_byte(double c) {
+  if (!(c > 0)) return 0;  // also NaN
+  if (c >= 1) return 255;
+  return static_cast<std::uint8_t>(std::lround(c * 255.0));
+}
+
+// One writer per format: formats `m` (checked by check_for_writing) into `o`.
+
+void write_obj(OutBuffer& o, const Mesh& m);  // write_obj.cpp
+void write_off(OutBuffer& o, const Mesh& m);  // write_off.cpp
+
+/// PLY with double coordinates (exact round trip), optional vertex normals, colours and uv, and
+/// optional per-face colours.
+void write_ply(OutBuffer& o, const Mesh& m, bool binary, const Eigen::MatrixXd* face_colors);  // write_ply.cpp
+
+/// Binary STL is float32; throws InvalidInput naming `path` when it cannot hold the faces.
+void write_stl(OutBuffer& o, const Mesh& m, bool binary, const std::string& path);  // write_stl.cpp
+
+}  // namespace msmesh::io_detail
