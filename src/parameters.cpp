@@ -189,8 +189,8 @@ const ParameterTable<NormalFilterOptions>& normal_filter_parameters() {
                  "stop normal filtering when ‖N^{k+1} − N^k‖_U is below this", kNormals),
             &O::tolerance),
       field(boolean("project-each-iteration",
-                    "project the normals onto the unit sphere after every N-step (the paper's reading); 0: once at "
-                    "the end",
+                    "project the normals onto the unit sphere after every N-step (the paper's reading; off: once at "
+                    "the end)",
                     kNormals),
             &O::project_each_iteration),
       field(solver_tolerance_info(), &O::solver_tolerance),
@@ -266,7 +266,7 @@ const ParameterTable<InpaintOptions>& inpaint_parameters() {
         field(real("feature-density", "", "", positive(), "density of the fill where features are recovered",
                    kInpaint),
               &O::feature_density),
-        field(boolean("features", "recover the sharp features running into the holes (0: CGAL's fill-and-fair only)",
+        field(boolean("features", "recover the sharp features running into the holes (off: CGAL's fill-and-fair only)",
                       kInpaint),
               &O::recover_features),
         field(real("feature-angle", "", "degrees", open(0, 180),

@@ -1,0 +1,100 @@
+// Presets (msmesh/presets.h): the named parameter sets, the auto rule, and that the structs'
+// own defaults are the documented default (preset cad).
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include "msmesh/errors.h"
+#include "msmesh/inpaint.h"
+#include "msmesh/parameters.h"
+#include "msmesh/presets.h"
+#include "msmesh/segment.h"
+#include "msmesh/shapes.h"
+#include "test_helpers.h"
+
+using namespace msmesh;
+
+namespace {
+
+/// Every parameter of the table has the same value in a and b.
+template <class Options>
+void expect_same_parameters(const ParameterTable<Options>& table, const Options& a, const Options& b,
+                            const std::string& what) {
+  for (const Parameter<Options>& p : table) EXPECT_EQ(p.get(a), p.get(b)) << what << ": " << p.info.name;
+}
+
+}  // namespace
+
+TEST(Presets, StructDefaultsAreTheCadPreset) {
+  expect_same_parameters(denoise_parameters(), DenoiseOptions{}, preset_options("cad"), "DenoiseOptions{}");
+  expect_same_parameters(normal_filter_parameters(), NormalFilterOptions{}, preset_options("cad").normals,
+                         "NormalFilterOptions{}");
+  expect_same_parameters(vertex_update_parameters(), VertexUpdateOptions{}, preset_options("cad").vertices,
+                         "VertexUpdateOptions{}");
+  expect_same_parameters(normal_filter_parameters(), SegmentOptions{}.normals, segment_normal_options(),
+                         "SegmentOptions{}.normals");
+  expect_same_parameters(normal_filter_parameters(), InpaintOptions{}.normals, inpaint_normal_options(),
+                         "InpaintOptions{}.normals");
+  expect_same_parameters(vertex_update_parameters(), InpaintOptions{}.vertices, inpaint_vertex_options(),
+                         "InpaintOptions{}.vertices");
+}
+
+TEST(Presets, NamesAndTheirOptionsAreValid) {
+  const std::vector<std::string> names = preset_names();
+  ASSERT_EQ(names, (std::vector<std::string>{"cad", "smooth"}));
+  for (const std::string& name : names) EXPECT_NO_THROW(preset_options(name).validate()) << name;
+  EXPECT_STREQ(default_preset(), "auto");
+  // The presets differ where docs/presets.md says they do.
+  EXPECT_NE(preset_options("cad").normals.beta, preset_options("smooth").normals.beta);
+  EXPECT_NE(preset_options("cad").normals.rho, preset_options("smooth").normals.rho);
+}
+
+TEST(Presets, AutoNeedsAMeshAndUnknownNamesListTheValidOnes) {
+  try {
+    preset_options("auto");
+    FAIL() << "auto accepted without a mesh";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("resolve_preset"), std::string::npos) << e.what();
+  }
+  try {
+    preset_options("sharp");
+    FAIL() << "unknown preset accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("auto, cad, smooth"), std::string::npos) << e.what();
+  }
+  const Mesh m = test::grid(6, 0.1);
+  EXPECT_THROW(resolve_preset("sharp", m.V, m.F), InvalidInput);
+}
+
+TEST(Presets, AutoChoosesFromTheMeshAndSaysWhy) {
+  // A CAD part: creases and flat faces -> cad; a bumpy organic sheet -> smooth.
+  const Mesh part = make_shape("fandisk", 8);
+  const ResolvedPreset cad = resolve_preset("auto", part.V, part.F);
+  EXPECT_TRUE(cad.automatic);
+  EXPECT_EQ(cad.preset, "cad");
+  EXPECT_EQ(cad.choice.preset, "cad");
+  EXPECT_NE(cad.reason().find("chosen automatically"), std::string::npos) << cad.reason();
+  EXPECT_NE(cad.reason().find("crease fraction"), std::string::npos) << cad.reason();
+  expect_same_parameters(denoise_parameters(), cad.options, preset_options("cad"), "auto -> cad");
+
+  const Mesh sphere = make_shape("sphere", 8);
+  const PresetChoice c = choose_preset(sphere.V, sphere.F);
+  EXPECT_EQ(c.preset, "smooth") << c.reason;
+  EXPECT_NE(c.reason.find(": smooth"), std::string::npos) << c.reason;
+
+  const ResolvedPreset asked = resolve_preset("smooth", part.V, part.F);
+  EXPECT_FALSE(asked.automatic);
+  EXPECT_EQ(asked.preset, "smooth");
+  EXPECT_EQ(asked.reason(), "requested");
+}
+
+TEST(Presets, AutoIsInvariantUnderScaleRotationAndTranslation) {
+  const Mesh part = make_shape("fandisk", 8);
+  Eigen::Matrix3d R;
+  R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized());
+  const Eigen::MatrixXd moved = ((part.V * R.transpose()) * 1e3).rowwise() + Eigen::RowVector3d(5, -7, 9);
+  const PresetChoice a = choose_preset(part.V, part.F), b = choose_preset(moved, part.F);
+  EXPECT_EQ(a.preset, b.preset);
+  EXPECT_NEAR(a.sharp_fraction, b.sharp_fraction, 1e-9);
+  EXPECT_NEAR(a.flat_fraction, b.flat_fraction, 1e-9);
+}
