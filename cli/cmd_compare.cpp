@@ -13,7 +13,9 @@
 #include "msmesh/metrics.h"
 #include "msmesh/render.h"
 #include "msmesh/text.h"
-#include "report.h"
+#include "field_files.h"
+#include "figures.h"
+#include "run_reports.h"
 
 namespace msmesh::cli {
 namespace {

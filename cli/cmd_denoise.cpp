@@ -4,7 +4,6 @@
 #include <memory>
 
 #include "command.h"
-#include "field_output.h"
 #include "json.h"
 #include "msmesh/denoise.h"
 #include "msmesh/parameters.h"
@@ -18,7 +17,9 @@
 #include "msmesh/threads.h"
 #include "msmesh/topology.h"
 #include "parameter_options.h"
-#include "report.h"
+#include "field_files.h"
+#include "figures.h"
+#include "run_reports.h"
 #include "usage_error.h"
 
 namespace msmesh::cli {
@@ -27,7 +28,7 @@ namespace {
 struct Args {
   std::string input, output, truth, field, preset = default_preset(), method = "nmstv", solver = "auto";
   bool json = false, quiet = false, in_place = false, ascii = false, repair = false;
-  std::string report;  // --report: HTML report (cli/report.h)
+  std::string report;  // --report: HTML report (cli/run_reports.h)
   std::unique_ptr<ParameterOptions<DenoiseOptions>> parameters;  // --alpha ... (parameters.h)
 };
 

@@ -13,7 +13,9 @@
 #include "msmesh/io.h"
 #include "msmesh/parameters.h"
 #include "parameter_options.h"
-#include "report.h"
+#include "field_files.h"
+#include "figures.h"
+#include "run_reports.h"
 #include "usage_error.h"
 
 namespace msmesh::cli {
@@ -23,7 +25,7 @@ struct Args {
   std::string input, output, truth;
   std::vector<int> holes;
   bool list = false, json = false, quiet = false, in_place = false, ascii = false;
-  std::string report;  // --report: HTML report (cli/report.h)
+  std::string report;  // --report: HTML report (cli/run_reports.h)
   std::unique_ptr<ParameterOptions<InpaintOptions>> parameters;  // every InpaintOptions number (parameters.h)
 };
 

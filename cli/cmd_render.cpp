@@ -7,7 +7,9 @@
 #include "msmesh/io.h"
 #include "msmesh/metrics.h"
 #include "msmesh/render.h"
-#include "report.h"
+#include "field_files.h"
+#include "figures.h"
+#include "run_reports.h"
 
 namespace msmesh::cli {
 namespace {

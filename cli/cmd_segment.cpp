@@ -16,7 +16,9 @@
 #include "msmesh/parameters.h"
 #include "msmesh/segment.h"
 #include "parameter_options.h"
-#include "report.h"
+#include "field_files.h"
+#include "figures.h"
+#include "run_reports.h"
 
 namespace msmesh::cli {
 namespace {
@@ -24,7 +26,7 @@ namespace {
 struct Args {
   std::string input, output, labels, parts, preset = "cad";
   bool denoise_first = false, json = false, quiet = false, ascii = false, in_place = false;
-  std::string report;  // --report: HTML report (cli/report.h)
+  std::string report;  // --report: HTML report (cli/run_reports.h)
   std::unique_ptr<ParameterOptions<SegmentOptions>> parameters;  // --angle, --alpha ... (parameters.h)
 };
 
