@@ -1,4 +1,4 @@
-// The 3D viewer of msmesh's HTML report (cli/report.cpp writes the page).
+// The 3D viewer of msmesh's HTML report (cli/report_page.cpp writes the page).
 //
 // The page holds the data in <script type="application/json" id="msmesh-data">: meshes with
 // base64 little-endian arrays (positions float32 #V*3, indices uint32 #F*3, optional per-face
@@ -26,7 +26,7 @@ import {
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 
-// ---- colour maps: the same as the C++ side (render.cpp heat_color, field_output.cpp) ----
+// ---- colour maps: the same as the C++ side (draw/color_map.cpp heat_color, cli/field_files.cpp) ----
 
 const HEAT = [
   [255, 255, 204], [255, 237, 160], [254, 217, 118], [254, 178, 76], [253, 141, 60],
@@ -49,7 +49,7 @@ export function fieldColor(x) {
 
 const BASE = [0.8, 0.8, 0.8];
 const HIGHLIGHT = [0.45, 0.7, 0.95];
-const FIELD_DRAW_BELOW = 0.9; // as cli/report.cpp field_coloring: smooth edges are not drawn
+const FIELD_DRAW_BELOW = 0.9; // as cli/figures.cpp field_coloring: smooth edges are not drawn
 
 // ---- decoding ----
 
