@@ -17,19 +17,15 @@
 
 #include "msmesh/errors.h"
 #include "msmesh/topology.h"
+#include "check.h"
 
 namespace msmesh {
 
 void RepairOptions::validate() const {
-  auto fail = [](const char* name, double value, const char* range) {
-    std::ostringstream os;
-    os << "repair: " << name << " = " << value << " is out of range; valid: " << range;
-    throw InvalidInput(os.str());
-  };
-  if (!(std::isfinite(weld_tolerance) && weld_tolerance >= 0 && weld_tolerance <= 1))
-    fail("weld_tolerance", weld_tolerance, "[0, 1] (a fraction of the mean edge length)");
-  if (!(std::isfinite(zero_area_tolerance) && zero_area_tolerance >= 0 && zero_area_tolerance <= 1))
-    fail("zero_area_tolerance", zero_area_tolerance, "[0, 1] (a fraction of the squared mean edge length)");
+  detail::check_range("repair", "weld_tolerance", weld_tolerance, 0, 1, detail::Ends::Closed,
+                      "(a fraction of the mean edge length)");
+  detail::check_range("repair", "zero_area_tolerance", zero_area_tolerance, 0, 1, detail::Ends::Closed,
+                      "(a fraction of the squared mean edge length)");
 }
 
 bool RepairReport::changed() const {
