@@ -35,7 +35,7 @@ void add_parameters(ReportData& d, const ParameterTable<Options>& table, const O
   }
 }
 
-void add_plots(ReportData& d, const NormalFilterResult& n, const VertexUpdateResult* v) {
+void add_plots(ReportData& d, const NormalFilterStats& n, const VertexUpdateStats* v) {
   if (!n.residual_history.empty() || !n.change_history.empty()) {
     ReportPlot p;
     p.title = "Normal filtering (Algorithm 1)";
