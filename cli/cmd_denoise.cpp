@@ -93,7 +93,8 @@ void run(const Args& a) {
     ev_out = evaluate(out.V, out.F, truth.V, truth.F);
   }
   if (!a.report.empty())
-    write_denoise_report(a.report, a.input, mesh, out.V, a.truth.empty() ? nullptr : &truth, a.method, preset.preset, o, r);
+    write_denoise_report(a.report, a.input, mesh, out.V, a.truth.empty() ? nullptr : &truth, a.method, preset.preset, o, r,
+                         ev_in, ev_out);
 
   if (a.json) {
     Json j;
