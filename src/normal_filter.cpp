@@ -118,45 +118,6 @@ SparseMatrix edge_smoothness_matrix(const Topology& topo, const Eigen::VectorXd&
       });
 }
 
-// Solves (K − diag(K) + diag(d)) v = b for the symmetric positive definite v-step matrix by
-// Jacobi-preconditioned conjugate gradients warm-started from v (the matrix is strongly
-// diagonally dominant for small ε, so this takes a few iterations). Returns the iteration
-// count, or −1 when it did not converge. Deterministic: fixed-order reductions.
-int solve_v_step(const SparseMatrix& K, const Eigen::VectorXd& K_diag, const Eigen::VectorXd& d,
-                 const Eigen::VectorXd& b, Eigen::VectorXd& v) {
-  const Eigen::Index n = b.size();
-  auto apply = [&](const Eigen::VectorXd& x, Eigen::VectorXd& y) {
-    // K is symmetric: column j of K is row j.
-#pragma omp parallel for schedule(static) if (n >= detail::kParallelMin)
-    for (Eigen::Index j = 0; j < n; ++j) {
-      double s = (d(j) - K_diag(j)) * x(j);
-      for (SparseMatrix::InnerIterator it(K, j); it; ++it) s += it.value() * x(it.row());
-      y(j) = s;
-    }
-  };
-  Eigen::VectorXd r(n), z(n), p(n), q(n);
-  apply(v, q);
-  r = b - q;
-  const double b_norm = std::max(b.norm(), 1e-300);
-  const double tol = 1e-10 * b_norm;
-  if (r.norm() <= tol) return 0;
-  z = r.cwiseQuotient(d);
-  p = z;
-  double rz = r.dot(z);
-  for (int it = 1; it <= 1000; ++it) {
-    apply(p, q);
-    const double alpha = rz / p.dot(q);
-    v += alpha * p;
-    r -= alpha * q;
-    if (r.norm() <= tol) return it;
-    z = r.cwiseQuotient(d);
-    const double rz_new = r.dot(z);
-    p = z + (rz_new / rz) * p;
-    rz = rz_new;
-  }
-  return -1;
-}
-
 }  // namespace
 
 double nmstv_energy(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
@@ -210,8 +171,8 @@ class NormalFilterRun {
   Eigen::VectorXd fid_weight_;       // 2α s_f (floored) per face
   std::optional<detail::ConstantSystem> n_system_;
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> gt_weight_;  // Gᵀ L per face
-  SparseMatrix Kv_;                  // 2βε Dᵀ L_W D
-  Eigen::VectorXd Kv_diag_, v_rhs_, v_diag_;
+  Eigen::VectorXd Kv_diag_, v_rhs_, v_diag_;  // diagonal of 2βε Dᵀ L_W D; the v-step's b and diagonal
+  std::optional<detail::BlockPcg> v_system_;  // the v-step matrix; its diagonal is set per iteration
   Rows N0r_, N_, N_prev_, N_next_, rhs_, q_, lambda_;
   Eigen::VectorXd v_, w_;
   NormalFilterResult res_;
@@ -239,8 +200,12 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
   // v-step matrix (eq. 23): L·diag(2γ w‖p‖ + β_e/(2ε)) + 2βε Dᵀ L_W D. Only the diagonal
   // changes between iterations. Dᵀ L_W D is assembled directly from the corner lines (each
   // line l couples its entering and leaving edges), stored with explicit diagonal entries.
-  Kv_ = edge_smoothness_matrix(topo_, ops_.line_lengths, 2.0 * o.beta * o.epsilon);
-  Kv_diag_ = Kv_.diagonal();
+  {
+    const SparseMatrix Kv = edge_smoothness_matrix(topo_, ops_.line_lengths, 2.0 * o.beta * o.epsilon);
+    Kv_diag_ = Kv.diagonal();
+    // Few sweeps per solve (strongly diagonally dominant): not worth a reordering.
+    v_system_.emplace(Kv, /*reorder=*/false);
+  }
   v_rhs_ = ops_.edge_lengths.cwiseProduct(edge_beta_) * (o.beta / (2 * o.epsilon));
   v_diag_.resize(ne_);
 
@@ -369,9 +334,13 @@ double NormalFilterRun::edge_pass() {
   })[0];
 }
 
-// 3. v-step (eq. 23) with the weights of this iteration and the new p; warm-started
-// Jacobi-preconditioned CG (the matrix is strongly diagonally dominant for small ε).
-int NormalFilterRun::v_step() { return solve_v_step(Kv_, Kv_diag_, v_diag_, v_rhs_, v_); }
+// 3. v-step (eq. 23) with the weights of this iteration and the new p; Jacobi-preconditioned
+// CG warm-started from the last v (the matrix is strongly diagonally dominant for small ε, so
+// this takes a few sweeps). Returns the sweeps; throws SolverError when 1000 do not suffice.
+int NormalFilterRun::v_step() {
+  v_system_->set_diagonal(v_diag_);
+  return v_system_->solve(v_rhs_, v_, 1e-10, 1000, "normal filtering (v-step)").iterations;
+}
 
 // The next N-step needs only p and λ, not v, so it can run beside this iteration's v-step:
 // on two threads when the N-step is factored (each side then runs its own loops on one
@@ -431,7 +400,6 @@ NormalFilterResult NormalFilterRun::run(const ProgressCallback& progress) {
     const double resid2 = edge_pass();
     int v_iterations = 0;
     v_step_beside_next_n_step(last, v_iterations);
-    if (v_iterations < 0) throw SolverError("normal filtering: v-step conjugate gradient did not converge");
     res_.v_solver_iterations.push_back(v_iterations);
 
     res_.residual_history.push_back(std::sqrt(std::max(0.0, resid2)));
