@@ -36,16 +36,15 @@ View view_from_name(const std::string& name) {
 }
 
 void RenderOptions::validate() const {
-  using detail::Ends;
   const char* w = "render options";
-  detail::check_range(w, "width", width, 1, 16384, Ends::Closed);
-  detail::check_range(w, "height", height, 1, 16384, Ends::Closed);
-  detail::check_range(w, "supersample", supersample, 1, 4, Ends::Closed);
-  detail::check_range(w, "fov_deg", fov_deg, 0, 120, Ends::Open);
-  detail::check_range(w, "margin", margin, 0, 0.45, Ends::Closed);
+  detail::check_range(w, "width", width, {1, 16384});
+  detail::check_range(w, "height", height, {1, 16384});
+  detail::check_range(w, "supersample", supersample, {1, 4});
+  detail::check_range(w, "fov_deg", fov_deg, {0, 120, true, true});
+  detail::check_range(w, "margin", margin, {0, 0.45});
   detail::check_non_negative(w, "ambient", ambient);
   detail::check_non_negative(w, "diffuse", diffuse);
-  detail::check_range(w, "line_width", line_width, 0, 20, Ends::OpenClosed);
+  detail::check_range(w, "line_width", line_width, {0, 20, true, false});
   if (!light.allFinite() || light.norm() == 0) throw InvalidInput("render option light must be a non-zero finite vector");
   if (frame_points.size() != 0 && (frame_points.cols() != 3 || !frame_points.allFinite()))
     throw InvalidInput("render option frame_points must be #P by 3 and finite");

@@ -14,8 +14,8 @@
 namespace msmesh {
 
 void NoiseOptions::validate() const {
-  detail::check_non_negative("noise", "sigma", sigma, "(in mean edge lengths)");
-  detail::check_range("noise", "impulsive_fraction", impulsive_fraction, 0, 1, detail::Ends::Closed);
+  detail::check_non_negative("noise", "sigma", sigma);  // in mean edge lengths
+  detail::check_range("noise", "impulsive_fraction", impulsive_fraction, {0, 1});
   if (direction != NoiseDirection::Normal && direction != NoiseDirection::Random)
     throw InvalidInput("noise: direction must be NoiseDirection::Normal or NoiseDirection::Random");
 }

@@ -22,10 +22,9 @@
 namespace msmesh {
 
 void RepairOptions::validate() const {
-  detail::check_range("repair", "weld_tolerance", weld_tolerance, 0, 1, detail::Ends::Closed,
-                      "(a fraction of the mean edge length)");
-  detail::check_range("repair", "zero_area_tolerance", zero_area_tolerance, 0, 1, detail::Ends::Closed,
-                      "(a fraction of the squared mean edge length)");
+  // Fractions of the mean edge length and of its square.
+  detail::check_range("repair", "weld_tolerance", weld_tolerance, {0, 1});
+  detail::check_range("repair", "zero_area_tolerance", zero_area_tolerance, {0, 1});
 }
 
 bool RepairReport::changed() const {
