@@ -50,7 +50,7 @@ double denoise_memory_estimate(Eigen::Index num_vertices, Eigen::Index num_faces
 DenoiseResult denoise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const DenoiseOptions& o,
                       const ProgressCallback& progress) {
   o.validate();
-  validate_mesh(V, F, "denoise");  // before the memory check: its sizes must mean something
+  validate_mesh(V, F, "denoise");
   check_memory(denoise_memory_estimate(V.rows(), F.rows(), o),
                "denoise (" + std::to_string(V.rows()) + " vertices, " + std::to_string(F.rows()) + " faces)");
   DenoiseResult r;
