@@ -14,8 +14,8 @@
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
+#include "msmesh/parameters.h"
 #include "msmesh/topology.h"
-#include "check.h"
 
 namespace msmesh {
 
@@ -36,15 +36,16 @@ View view_from_name(const std::string& name) {
 }
 
 void RenderOptions::validate() const {
+  constexpr double inf = std::numeric_limits<double>::infinity();
   const char* w = "render options";
-  detail::check_range(w, "width", width, {1, 16384});
-  detail::check_range(w, "height", height, {1, 16384});
-  detail::check_range(w, "supersample", supersample, {1, 4});
-  detail::check_range(w, "fov_deg", fov_deg, {0, 120, true, true});
-  detail::check_range(w, "margin", margin, {0, 0.45});
-  detail::check_non_negative(w, "ambient", ambient);
-  detail::check_non_negative(w, "diffuse", diffuse);
-  detail::check_range(w, "line_width", line_width, {0, 20, true, false});
+  check_parameter(w, "width", width, {1, 16384});
+  check_parameter(w, "height", height, {1, 16384});
+  check_parameter(w, "supersample", supersample, {1, 4});
+  check_parameter(w, "fov_deg", fov_deg, {0, 120, true, true});
+  check_parameter(w, "margin", margin, {0, 0.45});
+  check_parameter(w, "ambient", ambient, {0, inf});
+  check_parameter(w, "diffuse", diffuse, {0, inf});
+  check_parameter(w, "line_width", line_width, {0, 20, true, false});
   if (!light.allFinite() || light.norm() == 0) throw InvalidInput("render option light must be a non-zero finite vector");
   if (frame_points.size() != 0 && (frame_points.cols() != 3 || !frame_points.allFinite()))
     throw InvalidInput("render option frame_points must be #P by 3 and finite");

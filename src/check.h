@@ -1,6 +1,6 @@
-// Internal: range checks for the options structs that have no parameter table (multicut,
-// noise, repair, render, feature lines), through check_parameter (parameters.h) so that every
-// validate() says the same: "<where>: <name> = <value> is out of range; valid: <range>".
+// Internal: range checks for the options structs of the core that have no parameter table
+// (multicut, noise, repair, feature lines), through check_parameter (parameters.h) so that
+// every validate() says the same: "<where>: <name> = <value> is out of range; valid: <range>".
 #pragma once
 #include <cmath>
 #include <limits>
@@ -12,12 +12,7 @@ namespace msmesh::detail {
 
 /// Throws InvalidInput unless `value` is finite and in `range` ({min, max, min_open, max_open}).
 inline void check_range(const std::string& where, const std::string& name, double value, const ParameterRange& range) {
-  if (std::isfinite(value) && range.contains(value)) return;
-  ParameterInfo p;
-  p.name = name;
-  p.group = where;
-  p.range = range;
-  check_parameter(p, value);
+  check_parameter(where, name, value, range);
 }
 
 /// value finite and > 0.
