@@ -83,7 +83,7 @@ void run(const Args& a) {
   wo.binary = !a.ascii;
   write_mesh(a.output, out, wo);
   if (!a.field.empty()) {
-    write_edge_field(a.field, r.V, build_topology(mesh.F, mesh.V.rows()), r.v);
+    write_edge_field(a.field, r.V, r.edges, r.v);
   }
   const double t_write = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_w0).count();
 
@@ -93,7 +93,8 @@ void run(const Args& a) {
     ev_out = evaluate(out.V, out.F, truth.V, truth.F);
   }
   if (!a.report.empty())
-    write_denoise_report(a.report, a.input, mesh, out.V, a.truth.empty() ? nullptr : &truth, a.method, preset.preset, o, r);
+    write_denoise_report(a.report, a.input, mesh, out.V, a.truth.empty() ? nullptr : &truth, a.method, preset.preset, o, r,
+                         ev_in, ev_out);
 
   if (a.json) {
     Json j;

@@ -9,7 +9,9 @@
 
 namespace msmesh::cli {
 
-void write_edge_field(const std::string& path, const Eigen::MatrixXd& V, const Topology& topo, const Eigen::VectorXd& v);
+/// v[e] belongs to edges.row(e) (#E by 2 vertex indices into V, #V by 3).
+void write_edge_field(const std::string& path, const Eigen::MatrixXd& V, const Eigen::MatrixXi& edges,
+                      const Eigen::VectorXd& v);
 
 /// Colour map for a value in [0,1]: dark red (0, features) through yellow to light grey (1).
 Eigen::Vector3d field_color(double x);

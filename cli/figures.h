@@ -32,7 +32,7 @@ Coloring error_coloring(const Eigen::VectorXd& angle_deg, double max_deg);
 /// A round upper end for an error colour scale: the 98th percentile of the values rounded up
 /// to 1, 2 or 5 × 10^k (so one wild face does not wash the picture out), at least 1e-3.
 double error_scale(const Eigen::VectorXd& values);
-/// The edge field v (#E, edges of build_topology(F)) as lines coloured with field_color() of
+/// The edge field v (#E, v[e] on Topology::edges.row(e) of F) as lines coloured with field_color() of
 /// the normalised field (features dark red); smooth edges are left undrawn.
 Coloring field_coloring(const Eigen::MatrixXi& F, Eigen::Index num_vertices, const Eigen::VectorXd& v);
 /// Faces coloured by label (label_color), with dark lines where the label changes.

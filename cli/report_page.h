@@ -15,7 +15,7 @@ struct ReportMesh {
   Eigen::MatrixXd V;   ///< #V by 3
   Eigen::MatrixXi F;   ///< #F by 3
   Eigen::VectorXd face_error_deg;  ///< empty or #F: angle to the truth's face normal
-  Eigen::VectorXd edge_field;      ///< empty or #E: v on the edges of build_topology(F)
+  Eigen::VectorXd edge_field;      ///< empty or #E: v[e] on Topology::edges.row(e) of F
   Eigen::VectorXi face_labels;     ///< empty or #F: segment labels
   std::vector<bool> highlighted_faces;  ///< empty or #F: drawn tinted (e.g. faces added by inpainting)
 };

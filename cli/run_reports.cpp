@@ -35,7 +35,7 @@ void add_parameters(ReportData& d, const ParameterTable<Options>& table, const O
   }
 }
 
-void add_plots(ReportData& d, const NormalFilterResult& n, const VertexUpdateResult* v) {
+void add_plots(ReportData& d, const NormalFilterStats& n, const VertexUpdateStats* v) {
   if (!n.residual_history.empty() || !n.change_history.empty()) {
     ReportPlot p;
     p.title = "Normal filtering (Algorithm 1)";
@@ -65,17 +65,15 @@ void add_plots(ReportData& d, const NormalFilterResult& n, const VertexUpdateRes
 
 void write_denoise_report(const std::string& path, const std::string& input_path, const Mesh& input,
                           const Eigen::MatrixXd& result_V, const Mesh* truth, const std::string& method,
-                          const std::string& preset, const DenoiseOptions& o, const DenoiseResult& r) {
+                          const std::string& preset, const DenoiseOptions& o, const DenoiseResult& r,
+                          const Evaluation& ev_in, const Evaluation& ev_out) {
   ReportData d;
   d.title = "msmesh denoise: " + file_name(input_path);
   d.subtitle = std::to_string(input.V.rows()) + " vertices, " + std::to_string(input.F.rows()) + " faces; method " +
                method + (o.method == DenoiseMethod::Bilateral ? "" : ", preset " + preset);
   ReportMesh in{"input", input.V, input.F, {}, {}, {}, {}};
   ReportMesh out{"result", result_V, input.F, {}, r.v, {}, {}};
-  Evaluation ev_in, ev_out;
   if (truth) {
-    ev_in = evaluate(input.V, input.F, truth->V, truth->F);
-    ev_out = evaluate(result_V, input.F, truth->V, truth->F);
     if (ev_in.same_connectivity) in.face_error_deg = ev_in.normals.angle_rad * (180.0 / M_PI);
     if (ev_out.same_connectivity) out.face_error_deg = ev_out.normals.angle_rad * (180.0 / M_PI);
   }

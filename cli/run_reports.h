@@ -7,6 +7,7 @@
 #include "msmesh/denoise.h"
 #include "msmesh/inpaint.h"
 #include "msmesh/mesh.h"
+#include "msmesh/metrics.h"
 #include "msmesh/segment.h"
 #include "report_page.h"
 
@@ -14,9 +15,12 @@ namespace msmesh::cli {
 
 /// The report of `msmesh denoise`: input / result / truth meshes (error and edge field colour
 /// modes), parameters, figures (MSAE, mean angle, flips, distances) and the residual plots.
+/// `input_errors` and `result_errors` are evaluate() of input and result against *truth (read
+/// only when truth is given).
 void write_denoise_report(const std::string& path, const std::string& input_path, const Mesh& input,
                           const Eigen::MatrixXd& result_V, const Mesh* truth, const std::string& method,
-                          const std::string& preset, const DenoiseOptions& options, const DenoiseResult& result);
+                          const std::string& preset, const DenoiseOptions& options, const DenoiseResult& result,
+                          const Evaluation& input_errors, const Evaluation& result_errors);
 
 /// The report of `msmesh segment`: the mesh coloured by segment, its edge field, segment
 /// table and the normal filtering plots.

@@ -14,6 +14,7 @@
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
+#include "msmesh/parameters.h"
 #include "msmesh/topology.h"
 
 namespace msmesh {
@@ -35,17 +36,16 @@ View view_from_name(const std::string& name) {
 }
 
 void RenderOptions::validate() const {
-  auto bad = [](const std::string& what, double value, const std::string& range) {
-    throw InvalidInput("render option " + what + " = " + std::to_string(value) + " is outside " + range);
-  };
-  if (width < 1 || width > 16384) bad("width", width, "[1, 16384]");
-  if (height < 1 || height > 16384) bad("height", height, "[1, 16384]");
-  if (supersample < 1 || supersample > 4) bad("supersample", supersample, "[1, 4]");
-  if (!(fov_deg > 0 && fov_deg < 120)) bad("fov_deg", fov_deg, "(0, 120)");
-  if (!(margin >= 0 && margin <= 0.45)) bad("margin", margin, "[0, 0.45]");
-  if (!(ambient >= 0) || !std::isfinite(ambient)) bad("ambient", ambient, "[0, inf)");
-  if (!(diffuse >= 0) || !std::isfinite(diffuse)) bad("diffuse", diffuse, "[0, inf)");
-  if (!(line_width > 0 && line_width <= 20)) bad("line_width", line_width, "(0, 20]");
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const char* w = "render options";
+  check_parameter(w, "width", width, {1, 16384});
+  check_parameter(w, "height", height, {1, 16384});
+  check_parameter(w, "supersample", supersample, {1, 4});
+  check_parameter(w, "fov_deg", fov_deg, {0, 120, true, true});
+  check_parameter(w, "margin", margin, {0, 0.45});
+  check_parameter(w, "ambient", ambient, {0, inf});
+  check_parameter(w, "diffuse", diffuse, {0, inf});
+  check_parameter(w, "line_width", line_width, {0, 20, true, false});
   if (!light.allFinite() || light.norm() == 0) throw InvalidInput("render option light must be a non-zero finite vector");
   if (frame_points.size() != 0 && (frame_points.cols() != 3 || !frame_points.allFinite()))
     throw InvalidInput("render option frame_points must be #P by 3 and finite");

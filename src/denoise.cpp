@@ -2,11 +2,13 @@
 
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/memory.h"
 #include "msmesh/mesh.h"
+#include "msmesh/prepared_mesh.h"
 #include "msmesh/topology.h"
 
 namespace msmesh {
@@ -67,14 +69,19 @@ DenoiseResult denoise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
     r.seconds_vertices = std::chrono::duration<double>(clock::now() - t1).count();
     return r;
   }
+  // Checked, normalised and connected once for both stages.
+  const PreparedMesh mesh(V, F, "denoise");
   NormalFilterOptions no = o.normals;
   no.reweight = (o.method == DenoiseMethod::NMSTV);
-  r.normal_report = filter_normals(V, F, no, {}, progress);
-  r.normals = r.normal_report.normals;
-  r.v = r.normal_report.v;
+  NormalFilterResult nr = filter_normals(mesh, no, {}, progress);
+  r.normals = std::move(nr.normals);
+  r.v = std::move(nr.v);
+  r.edges = std::move(nr.edges);
+  r.normal_report = std::move(static_cast<NormalFilterStats&>(nr));
   const auto t1 = clock::now();
-  r.vertex_report = update_vertices(V, F, r.normals, r.v.cwiseMax(0.0).cwiseMin(1.0), o.vertices, {}, progress);
-  r.V = r.vertex_report.V;
+  VertexUpdateResult vr = update_vertices(mesh, r.normals, r.v.cwiseMax(0.0).cwiseMin(1.0), o.vertices, {}, progress);
+  r.V = std::move(vr.V);
+  r.vertex_report = std::move(static_cast<VertexUpdateStats&>(vr));
   keep_unreferenced(V, F, r.V);
   r.seconds_normals = std::chrono::duration<double>(t1 - t0).count();
   r.seconds_vertices = std::chrono::duration<double>(clock::now() - t1).count();

@@ -10,17 +10,13 @@
 #include <vector>
 
 #include "msmesh/errors.h"
+#include "check.h"
 
 namespace msmesh {
 
 void MulticutOptions::validate() const {
-  auto fail = [](const char* name, double value, const char* range) {
-    std::ostringstream os;
-    os << "multicut: " << name << " = " << value << " is out of range; valid: " << range;
-    throw InvalidInput(os.str());
-  };
-  if (max_local_rounds < 0) fail("max_local_rounds", max_local_rounds, ">= 0");
-  if (!(std::isfinite(tolerance) && tolerance >= 0)) fail("tolerance", tolerance, ">= 0");
+  detail::check_non_negative("multicut", "max_local_rounds", max_local_rounds);
+  detail::check_non_negative("multicut", "tolerance", tolerance);
 }
 
 namespace {

@@ -8,21 +8,14 @@
 
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
+#include "check.h"
 #include "random.h"
 
 namespace msmesh {
 
 void NoiseOptions::validate() const {
-  if (!std::isfinite(sigma) || sigma < 0) {
-    std::ostringstream os;
-    os << "noise: sigma = " << sigma << " is invalid; it must be a finite number >= 0 (in mean edge lengths)";
-    throw InvalidInput(os.str());
-  }
-  if (!(impulsive_fraction >= 0 && impulsive_fraction <= 1)) {  // also rejects NaN
-    std::ostringstream os;
-    os << "noise: impulsive_fraction = " << impulsive_fraction << " is invalid; it must lie in [0, 1]";
-    throw InvalidInput(os.str());
-  }
+  detail::check_non_negative("noise", "sigma", sigma);  // in mean edge lengths
+  detail::check_range("noise", "impulsive_fraction", impulsive_fraction, {0, 1});
   if (direction != NoiseDirection::Normal && direction != NoiseDirection::Random)
     throw InvalidInput("noise: direction must be NoiseDirection::Normal or NoiseDirection::Random");
 }

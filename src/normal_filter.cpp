@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <exception>
+#include <optional>
 #include <sstream>
 
 #include "msmesh/errors.h"
@@ -117,45 +118,6 @@ SparseMatrix edge_smoothness_matrix(const Topology& topo, const Eigen::VectorXd&
       });
 }
 
-// Solves (K − diag(K) + diag(d)) v = b for the symmetric positive definite v-step matrix by
-// Jacobi-preconditioned conjugate gradients warm-started from v (the matrix is strongly
-// diagonally dominant for small ε, so this takes a few iterations). Returns the iteration
-// count, or −1 when it did not converge. Deterministic: fixed-order reductions.
-int solve_v_step(const SparseMatrix& K, const Eigen::VectorXd& K_diag, const Eigen::VectorXd& d,
-                 const Eigen::VectorXd& b, Eigen::VectorXd& v) {
-  const Eigen::Index n = b.size();
-  auto apply = [&](const Eigen::VectorXd& x, Eigen::VectorXd& y) {
-    // K is symmetric: column j of K is row j.
-#pragma omp parallel for schedule(static) if (n >= detail::kParallelMin)
-    for (Eigen::Index j = 0; j < n; ++j) {
-      double s = (d(j) - K_diag(j)) * x(j);
-      for (SparseMatrix::InnerIterator it(K, j); it; ++it) s += it.value() * x(it.row());
-      y(j) = s;
-    }
-  };
-  Eigen::VectorXd r(n), z(n), p(n), q(n);
-  apply(v, q);
-  r = b - q;
-  const double b_norm = std::max(b.norm(), 1e-300);
-  const double tol = 1e-10 * b_norm;
-  if (r.norm() <= tol) return 0;
-  z = r.cwiseQuotient(d);
-  p = z;
-  double rz = r.dot(z);
-  for (int it = 1; it <= 1000; ++it) {
-    apply(p, q);
-    const double alpha = rz / p.dot(q);
-    v += alpha * p;
-    r -= alpha * q;
-    if (r.norm() <= tol) return it;
-    z = r.cwiseQuotient(d);
-    const double rz_new = r.dot(z);
-    p = z + (rz_new / rz) * p;
-    rz = rz_new;
-  }
-  return -1;
-}
-
 }  // namespace
 
 double nmstv_energy(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
@@ -171,39 +133,111 @@ double nmstv_energy(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Ei
 NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const NormalFilterOptions& o,
                                   const NormalFilterWeights& weights, const ProgressCallback& progress,
                                   const Eigen::MatrixXd& normals0) {
-  o.validate();
-  validate_mesh(V, F, "normal filtering");
-  if (F.rows() == 0) throw InvalidInput("normal filtering: the mesh has no faces");
-  const Topology topo = build_topology(F, V.rows());
-  const detail::Normalization norm = detail::normalization_for(V, F, edge_lengths(V, topo).mean());
-  const Eigen::MatrixXd Vn = norm.apply(V);
-  const Operators ops = build_operators(Vn, F, topo);
-  const Eigen::Index nf = F.rows(), ne = topo.num_edges();
-  const Eigen::VectorXd face_alpha = ones_or(weights.face_alpha, nf, "face_alpha");
-  const Eigen::VectorXd edge_beta = ones_or(weights.edge_beta, ne, "edge_beta");
+  o.validate();  // the options before the mesh
+  return filter_normals(PreparedMesh(V, F, "normal filtering"), o, weights, progress, normals0);
+}
 
-  Eigen::MatrixXd N0 = normals0.size() ? normals0 : face_normals(Vn, F);
-  if (N0.rows() != nf || N0.cols() != 3) throw InvalidInput("normal filtering: input normals must be #F by 3");
+namespace {
+
+using Rows = detail::RowMatrixX3;
+
+// Algorithm 1 on one prepared mesh, as named steps over shared state: the constructor
+// assembles the constant parts (operators, N-step system, v-step matrix), then per iteration
+// the stopping test (normal_change), the p-step with the multiplier update (edge_pass), the
+// v-step and the N-step of the next iteration.
+class NormalFilterRun {
+ public:
+  NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOptions& o, const NormalFilterWeights& weights,
+                  const Eigen::MatrixXd& normals0);
+  NormalFilterResult run(const ProgressCallback& progress);
+
+ private:
+  void assemble_n_step();
+  void n_step_rhs();
+  void n_step(Rows& N_out, const Rows& fallback);
+  double normal_change() const;
+  double edge_pass();
+  int v_step();
+  void v_step_beside_next_n_step(bool last, int& v_iterations);
+  bool overlap() const;
+
+  const NormalFilterOptions& o_;
+  const Eigen::MatrixXi& F_;
+  const Topology& topo_;
+  const Operators ops_;
+  const Eigen::Index nf_, ne_;
+  const Eigen::VectorXd face_alpha_, edge_beta_;
+  Eigen::MatrixXd N0_;
+  Eigen::VectorXd fid_weight_;       // 2α s_f (floored) per face
+  std::optional<detail::ConstantSystem> n_system_;
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> gt_weight_;  // Gᵀ L per face
+  Eigen::VectorXd Kv_diag_, v_rhs_, v_diag_;  // diagonal of 2βε Dᵀ L_W D; the v-step's b and diagonal
+  std::optional<detail::BlockPcg> v_system_;  // the v-step matrix; its diagonal is set per iteration
+  Rows N0r_, N_, N_prev_, N_next_, rhs_, q_, lambda_;
+  Eigen::VectorXd v_, w_;
+  NormalFilterResult res_;
+};
+
+NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOptions& o,
+                                 const NormalFilterWeights& weights, const Eigen::MatrixXd& normals0)
+    : o_(o),
+      F_(mesh.faces()),
+      topo_(mesh.topology()),
+      ops_(build_operators(mesh.positions(), mesh.faces(), mesh.topology())),
+      nf_(mesh.num_faces()),
+      ne_(mesh.num_edges()),
+      face_alpha_(ones_or(weights.face_alpha, nf_, "face_alpha")),
+      edge_beta_(ones_or(weights.edge_beta, ne_, "edge_beta")) {
+  N0_ = normals0.size() ? normals0 : face_normals(mesh.positions(), F_);
+  if (N0_.rows() != nf_ || N0_.cols() != 3) throw InvalidInput("normal filtering: input normals must be #F by 3");
 
   // Zero-area faces would make the N-step singular where they have no interior edge; give
   // them a tiny positive weight instead (their normals then follow their neighbours).
-  const double area_floor = 1e-12 * std::max(1e-300, ops.face_areas.mean());
-  const Eigen::VectorXd fid_weight =
-      (2.0 * o.alpha) * ops.face_areas.cwiseMax(area_floor).cwiseProduct(face_alpha).cwiseMax(area_floor);
+  const double area_floor = 1e-12 * std::max(1e-300, ops_.face_areas.mean());
+  fid_weight_ = (2.0 * o.alpha) * ops_.face_areas.cwiseMax(area_floor).cwiseProduct(face_alpha_).cwiseMax(area_floor);
+  assemble_n_step();
 
-  // N-step matrix (eq. 20 in matrix form, DESIGN.md step 1): 2αS + r Gᵀ L G; constant.
+  // v-step matrix (eq. 23): L·diag(2γ w‖p‖ + β_e/(2ε)) + 2βε Dᵀ L_W D. Only the diagonal
+  // changes between iterations. Dᵀ L_W D is assembled directly from the corner lines (each
+  // line l couples its entering and leaving edges), stored with explicit diagonal entries.
+  {
+    const SparseMatrix Kv = edge_smoothness_matrix(topo_, ops_.line_lengths, 2.0 * o.beta * o.epsilon);
+    Kv_diag_ = Kv.diagonal();
+    // Few sweeps per solve (strongly diagonally dominant): not worth a reordering.
+    v_system_.emplace(Kv, /*reorder=*/false);
+  }
+  v_rhs_ = ops_.edge_lengths.cwiseProduct(edge_beta_) * (o.beta / (2 * o.epsilon));
+  v_diag_.resize(ne_);
+
+  // The iterates, row-major (one row per face or edge) and allocated once.
+  N0r_ = detail::to_rows(N0_);
+  N_ = N0r_;
+  N_prev_.resize(nf_, 3);
+  N_next_.resize(nf_, 3);
+  rhs_.resize(nf_, 3);
+  // q = r p + λ per edge, what the N-step right-hand side needs of p and λ (p itself is
+  // used only in the pass over the edges that makes it).
+  q_ = Rows::Zero(ne_, 3);
+  lambda_ = Rows::Zero(ne_, 3);
+  v_ = Eigen::VectorXd::Constant(ne_, o.v_initial);
+  w_ = Eigen::VectorXd::Ones(ne_);  // w⁰ = 1
+}
+
+// N-step matrix (eq. 20 in matrix form, DESIGN.md step 1): 2αS + r Gᵀ L G; constant. Also the
+// Gᵀ L weights of its right-hand side.
+void NormalFilterRun::assemble_n_step() {
   // Row f: its fidelity weight plus r·len(e) on the diagonal for each interior edge e of f,
   // −r·len(e) towards the face across e.
-  SparseMatrix A = detail::symmetric_from_rows(
-      nf, [](Eigen::Index) { return 4; },
+  const SparseMatrix A = detail::symmetric_from_rows(
+      nf_, [](Eigen::Index) { return 4; },
       [&](Eigen::Index f, int* col, double* val) {
         int n = 1;
-        double diag = fid_weight(f);
+        double diag = fid_weight_(f);
         for (int k = 0; k < 3; ++k) {
-          const int e = topo.face_edges(f, k);
-          if (!topo.edge_is_interior[e]) continue;
-          const int g = topo.edge_faces(e, 0) == f ? topo.edge_faces(e, 1) : topo.edge_faces(e, 0);
-          const double w = o.penalty * ops.edge_lengths(e);
+          const int e = topo_.face_edges(f, k);
+          if (!topo_.edge_is_interior[e]) continue;
+          const int g = topo_.edge_faces(e, 0) == f ? topo_.edge_faces(e, 1) : topo_.edge_faces(e, 0);
+          const double w = o_.penalty * ops_.edge_lengths(e);
           diag += w;
           col[n] = g;
           val[n++] = -w;
@@ -218,178 +252,190 @@ NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixX
   // diagonal dominance and the factorisation is faster at any size (docs/performance.md).
   constexpr Eigen::Index kCgMinFaces = 80000;
   const bool use_cg =
-      o.solver == LinearSolver::CG ||
-      (o.solver == LinearSolver::Auto && nf >= kCgMinFaces && face_alpha.minCoeff() >= 0.5);
-  const detail::ConstantSystem n_step(A, use_cg, "normal filtering (N-step)");
-  A = SparseMatrix();
+      o_.solver == LinearSolver::CG ||
+      (o_.solver == LinearSolver::Auto && nf_ >= kCgMinFaces && face_alpha_.minCoeff() >= 0.5);
+  n_system_.emplace(A, use_cg, "normal filtering (N-step)");
 
   // Gᵀ L per face: face f meets edge face_edges(f,k) with sign gt_sign(f,k) (+1 when f is the
   // edge's first face, −1 for the second, 0 when the edge carries no gradient), so the
   // right-hand side is assembled face by face without a scatter.
-  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> gt_weight(nf, 3);
-  for (Eigen::Index f = 0; f < nf; ++f)
+  gt_weight_.resize(nf_, 3);
+  for (Eigen::Index f = 0; f < nf_; ++f)
     for (int k = 0; k < 3; ++k) {
-      const int e = topo.face_edges(f, k);
+      const int e = topo_.face_edges(f, k);
       double sgn = 0;
-      if (topo.edge_is_interior[e]) sgn = topo.edge_faces(e, 0) == f ? 1.0 : (topo.edge_faces(e, 1) == f ? -1.0 : 0.0);
-      gt_weight(f, k) = sgn * ops.edge_lengths(e);
+      if (topo_.edge_is_interior[e])
+        sgn = topo_.edge_faces(e, 0) == f ? 1.0 : (topo_.edge_faces(e, 1) == f ? -1.0 : 0.0);
+      gt_weight_(f, k) = sgn * ops_.edge_lengths(e);
     }
+}
 
-  // v-step matrix (eq. 23): L·diag(2γ w‖p‖ + β_e/(2ε)) + 2βε Dᵀ L_W D. Only the diagonal
-  // changes between iterations. Dᵀ L_W D is assembled directly from the corner lines (each
-  // line l couples its entering and leaving edges), stored with explicit diagonal entries.
-  const SparseMatrix Kv = edge_smoothness_matrix(topo, ops.line_lengths, 2.0 * o.beta * o.epsilon);
-  const Eigen::VectorXd Kv_diag = Kv.diagonal();
-  const Eigen::VectorXd v_rhs = ops.edge_lengths.cwiseProduct(edge_beta) * (o.beta / (2 * o.epsilon));
-  Eigen::VectorXd v_diag(ne);
+// 1. N-step right-hand side: 2αS N⁰ + GᵀL (r p + λ), face by face.
+void NormalFilterRun::n_step_rhs() {
+  detail::parallel_for(nf_, [&](Eigen::Index f) {
+    Eigen::RowVector3d b = fid_weight_(f) * N0r_.row(f);
+    for (int j = 0; j < 3; ++j) {
+      const int e = topo_.face_edges(f, j);
+      if (gt_weight_(f, j) != 0) b += gt_weight_(f, j) * q_.row(e);
+    }
+    rhs_.row(f) = b;
+  });
+}
 
-  // The iterates, row-major (one row per face or edge) and allocated once.
-  using Rows = detail::RowMatrixX3;
-  const Rows N0r = detail::to_rows(N0);
-  Rows N = N0r, N_prev(nf, 3), rhs(nf, 3);
-  // q = r p + λ per edge, what the N-step right-hand side needs of p and λ (p itself is
-  // used only in the pass over the edges that makes it).
-  Rows q = Rows::Zero(ne, 3), lambda = Rows::Zero(ne, 3);
-  Eigen::VectorXd v = Eigen::VectorXd::Constant(ne, o.v_initial);
-  Eigen::VectorXd w = Eigen::VectorXd::Ones(ne);  // w⁰ = 1
-  const Eigen::VectorXd& len = ops.edge_lengths;
-  const Eigen::VectorXd& area = ops.face_areas;
+// 1. N-step: (2αS + r GᵀLG) N_out = rhs, warm-started from N_out for CG.
+// The paper projects N onto the unit sphere after every N-step. That makes the splitting
+// inconsistent (p and λ then refer to another N than the linear N-step produces): for
+// α ≲ 1 or heavy noise the residual grows and the normals end up worse than the input
+// (gnf fandisk 0.7: normal MSAE 1106e-3 at α = 0.5 against 818e-3 for the noisy input).
+// Default: solve the relaxed problem and project once after the loop (docs/presets.md).
+void NormalFilterRun::n_step(Rows& N_out, const Rows& fallback) {
+  const int sweeps = n_system_->solve(rhs_, N_out, o_.solver_tolerance);
+  if (sweeps >= 0) res_.n_solver_iterations.push_back(sweeps);
+  if (o_.project_each_iteration) normalize_rows(N_out, fallback);
+}
 
-  NormalFilterResult res;
-  // 1. N-step right-hand side: 2αS N⁰ + GᵀL (r p + λ), face by face.
-  auto build_rhs = [&] {
-    detail::parallel_for(nf, [&](Eigen::Index f) {
-      Eigen::RowVector3d b = fid_weight(f) * N0r.row(f);
-      for (int j = 0; j < 3; ++j) {
-        const int e = topo.face_edges(f, j);
-        if (gt_weight(f, j) != 0) b += gt_weight(f, j) * q.row(e);
+// The stopping test's ‖N^{k+1} − N^k‖_U.
+double NormalFilterRun::normal_change() const {
+  const Eigen::VectorXd& area = ops_.face_areas;
+  return std::sqrt(std::max(0.0, detail::deterministic_sums<1>(nf_, [&](Eigen::Index f0, Eigen::Index f1,
+                                                                          std::array<double, 1>& s) {
+    for (Eigen::Index f = f0; f < f1; ++f) s[0] += area(f) * (N_.row(f) - N_prev_.row(f)).squaredNorm();
+  })[0]));
+}
+
+// 2.+4. One pass over the edges: p-step (eq. 22: vector soft threshold of ψ = ∇N − λ/r by
+// γ v² w / r), the multiplier (DESIGN.md step 4: λ += ν r (p − ∇N)), and the diagonal of the
+// v-step with this iteration's weights w; then the IRLA weights of the next iteration from
+// p^{k+1}. Returns ‖p − ∇N‖²_V.
+double NormalFilterRun::edge_pass() {
+  const Eigen::VectorXd& len = ops_.edge_lengths;
+  const NormalFilterOptions& o = o_;
+  return detail::deterministic_sums<1>(ne_, [&](Eigen::Index e0, Eigen::Index e1, std::array<double, 1>& s) {
+    for (Eigen::Index e = e0; e < e1; ++e) {
+      Eigen::RowVector3d g = Eigen::RowVector3d::Zero(), pe = Eigen::RowVector3d::Zero();
+      double pe_norm = 0;
+      if (topo_.edge_is_interior[e]) {
+        g = N_.row(topo_.edge_faces(e, 0)) - N_.row(topo_.edge_faces(e, 1));
+        const Eigen::RowVector3d psi = g - lambda_.row(e) / o.penalty;
+        const double psi_norm = psi.norm();
+        const double thr = o.gamma * v_(e) * v_(e) * w_(e) / o.penalty;
+        if (psi_norm > thr) {
+          pe = (1.0 - thr / psi_norm) * psi;
+          pe_norm = psi_norm - thr;
+        }
       }
-      rhs.row(f) = b;
-    });
-  };
-  // 1. N-step: (2αS + r GᵀLG) N_out = rhs, warm-started from N_out for CG.
-  // The paper projects N onto the unit sphere after every N-step. That makes the splitting
-  // inconsistent (p and λ then refer to another N than the linear N-step produces): for
-  // α ≲ 1 or heavy noise the residual grows and the normals end up worse than the input
-  // (gnf fandisk 0.7: normal MSAE 1106e-3 at α = 0.5 against 818e-3 for the noisy input).
-  // Default: solve the relaxed problem and project once after the loop (docs/presets.md).
-  auto solve_n = [&](Rows& N_out, const Rows& fallback) {
-    const int sweeps = n_step.solve(rhs, N_out, o.solver_tolerance);
-    if (sweeps >= 0) res.n_solver_iterations.push_back(sweeps);
-    if (o.project_each_iteration) normalize_rows(N_out, fallback);
-  };
-  // The next N-step needs only p and λ, not v, so it can run beside this iteration's v-step:
-  // on two threads when the N-step is factored (each side then runs its own loops on one
-  // thread; measured faster than the two one after the other on two threads each). Same
-  // arithmetic either way.
+      const Eigen::RowVector3d r = pe - g;
+      lambda_.row(e) += o.relaxation * o.penalty * r;
+      q_.row(e) = o.penalty * pe + lambda_.row(e);
+      s[0] += len(e) * r.squaredNorm();
+      v_diag_(e) = Kv_diag_(e) + len(e) * (2 * o.gamma * w_(e) * pe_norm + edge_beta_(e) * o.beta / (2 * o.epsilon));
+      w_(e) = irla_weight(pe_norm, o);
+    }
+  })[0];
+}
+
+// 3. v-step (eq. 23) with the weights of this iteration and the new p; Jacobi-preconditioned
+// CG warm-started from the last v (the matrix is strongly diagonally dominant for small ε, so
+// this takes a few sweeps). Returns the sweeps; throws SolverError when 1000 do not suffice.
+int NormalFilterRun::v_step() {
+  v_system_->set_diagonal(v_diag_);
+  return v_system_->solve(v_rhs_, v_, 1e-10, 1000, "normal filtering (v-step)").iterations;
+}
+
+// The next N-step needs only p and λ, not v, so it can run beside this iteration's v-step:
+// on two threads when the N-step is factored (each side then runs its own loops on one
+// thread; measured faster than the two one after the other on two threads each). Same
+// arithmetic either way.
+bool NormalFilterRun::overlap() const {
 #ifdef _OPENMP
   // With more than two threads and enough edges for the v-step's own loops to spread, the
   // v-step keeps all threads instead (inside a section it would run on one).
   const int threads = omp_get_max_threads();
-  const bool overlap = !n_step.iterative() && threads > 1 && (threads == 2 || ne < detail::kParallelMin);
+  return !n_system_->iterative() && threads > 1 && (threads == 2 || ne_ < detail::kParallelMin);
 #else
-  const bool overlap = false;
+  return false;
 #endif
-  Rows N_next(nf, 3);
+}
 
-  build_rhs();
-  N_prev = N;
-  solve_n(N, N_prev);
-  for (int k = 0; k < o.max_iterations; ++k) {
-    const double change = std::sqrt(std::max(0.0, detail::deterministic_sums<1>(nf, [&](Eigen::Index f0, Eigen::Index f1,
-                                                                                         std::array<double, 1>& s) {
-      for (Eigen::Index f = f0; f < f1; ++f) s[0] += area(f) * (N.row(f) - N_prev.row(f)).squaredNorm();
-    })[0]));
-    const bool last = k + 1 == o.max_iterations || change < o.tolerance;
-
-    // 2.+4. One pass over the edges: p-step (eq. 22: vector soft threshold of ψ = ∇N − λ/r
-    // by γ v² w / r), the multiplier (DESIGN.md step 4: λ += ν r (p − ∇N)), the residual
-    // ‖p − ∇N‖_V, and the diagonal of the v-step with this iteration's weights w; then the
-    // IRLA weights of the next iteration from p^{k+1}.
-    const double resid2 = detail::deterministic_sums<1>(ne, [&](Eigen::Index e0, Eigen::Index e1,
-                                                                std::array<double, 1>& s) {
-      for (Eigen::Index e = e0; e < e1; ++e) {
-        Eigen::RowVector3d g = Eigen::RowVector3d::Zero(), pe = Eigen::RowVector3d::Zero();
-        double pe_norm = 0;
-        if (topo.edge_is_interior[e]) {
-          g = N.row(topo.edge_faces(e, 0)) - N.row(topo.edge_faces(e, 1));
-          const Eigen::RowVector3d psi = g - lambda.row(e) / o.penalty;
-          const double psi_norm = psi.norm();
-          const double thr = o.gamma * v(e) * v(e) * w(e) / o.penalty;
-          if (psi_norm > thr) {
-            pe = (1.0 - thr / psi_norm) * psi;
-            pe_norm = psi_norm - thr;
-          }
-        }
-        const Eigen::RowVector3d r = pe - g;
-        lambda.row(e) += o.relaxation * o.penalty * r;
-        q.row(e) = o.penalty * pe + lambda.row(e);
-        s[0] += len(e) * r.squaredNorm();
-        v_diag(e) = Kv_diag(e) + len(e) * (2 * o.gamma * w(e) * pe_norm + edge_beta(e) * o.beta / (2 * o.epsilon));
-        w(e) = irla_weight(pe_norm, o);
-      }
-    })[0];
-
-    // 3. v-step (eq. 23) with the weights of this iteration and the new p; warm-started
-    // Jacobi-preconditioned CG (the matrix is strongly diagonally dominant for small ε).
-    // Beside it, the N-step of the next iteration (unless this is the last).
-    if (!last) {
-      build_rhs();
-      if (n_step.iterative()) N_next = N;  // warm start
-    }
-    int cg_iterations = 0;
-    const auto v_step = [&] { cg_iterations = solve_v_step(Kv, Kv_diag, v_diag, v_rhs, v); };
-    if (overlap && !last) {
-      // Not a parallel region with an if clause: the loops inside an inactive region ran on
-      // one thread (the 100K-face cube's normal filter took 1.14 s instead of 0.73 s).
-      std::exception_ptr failed[2];
+// The v-step, and beside it the N-step of the next iteration (unless this is the last).
+void NormalFilterRun::v_step_beside_next_n_step(bool last, int& v_iterations) {
+  if (!last) {
+    n_step_rhs();
+    if (n_system_->iterative()) N_next_ = N_;  // warm start
+  }
+  if (overlap() && !last) {
+    // Not a parallel region with an if clause: the loops inside an inactive region ran on
+    // one thread (the 100K-face cube's normal filter took 1.14 s instead of 0.73 s).
+    std::exception_ptr failed[2];
 #pragma omp parallel sections num_threads(2)
-      {
+    {
 #pragma omp section
-        try {
-          solve_n(N_next, N);
-        } catch (...) {
-          failed[0] = std::current_exception();
-        }
-#pragma omp section
-        try {
-          v_step();
-        } catch (...) {
-          failed[1] = std::current_exception();
-        }
+      try {
+        n_step(N_next_, N_);
+      } catch (...) {
+        failed[0] = std::current_exception();
       }
-      for (const auto& e : failed)
-        if (e) std::rethrow_exception(e);
-    } else {
-      if (!last) solve_n(N_next, N);
-      v_step();
+#pragma omp section
+      try {
+        v_iterations = v_step();
+      } catch (...) {
+        failed[1] = std::current_exception();
+      }
     }
-    if (cg_iterations < 0) throw SolverError("normal filtering: v-step conjugate gradient did not converge");
-    res.v_solver_iterations.push_back(cg_iterations);
+    for (const auto& e : failed)
+      if (e) std::rethrow_exception(e);
+  } else {
+    if (!last) n_step(N_next_, N_);
+    v_iterations = v_step();
+  }
+}
 
-    res.residual_history.push_back(std::sqrt(std::max(0.0, resid2)));
-    res.change_history.push_back(change);
-    if (o.record_energy)
-      res.energy_history.push_back(
-          energy_normalised(ops, Eigen::MatrixXd(N), v, N0, o, face_alpha, edge_beta));
-    res.iterations = k + 1;
+NormalFilterResult NormalFilterRun::run(const ProgressCallback& progress) {
+  n_step_rhs();
+  N_prev_ = N_;
+  n_step(N_, N_prev_);
+  for (int k = 0; k < o_.max_iterations; ++k) {
+    const double change = normal_change();
+    const bool last = k + 1 == o_.max_iterations || change < o_.tolerance;
+    const double resid2 = edge_pass();
+    int v_iterations = 0;
+    v_step_beside_next_n_step(last, v_iterations);
+    res_.v_solver_iterations.push_back(v_iterations);
+
+    res_.residual_history.push_back(std::sqrt(std::max(0.0, resid2)));
+    res_.change_history.push_back(change);
+    if (o_.record_energy)
+      res_.energy_history.push_back(
+          energy_normalised(ops_, Eigen::MatrixXd(N_), v_, N0_, o_, face_alpha_, edge_beta_));
+    res_.iterations = k + 1;
 
     if (progress) {
-      ProgressEvent ev{"normal filtering", k + 1, o.max_iterations, change};
+      ProgressEvent ev{"normal filtering", k + 1, o_.max_iterations, change};
       if (!progress(ev)) throw Cancelled("normal filtering cancelled");
     }
-    if (change < o.tolerance) {
-      res.converged = true;
+    if (change < o_.tolerance) {
+      res_.converged = true;
       break;
     }
     if (last) break;
-    N_prev.swap(N);  // N_prev = N^k
-    N.swap(N_next);  // N = N^{k+1}
+    N_prev_.swap(N_);  // N_prev = N^k
+    N_.swap(N_next_);  // N = N^{k+1}
   }
-  normalize_rows(N, N0r);
-  res.normals = N;
-  res.v = std::move(v);
-  return res;
+  normalize_rows(N_, N0r_);
+  res_.normals = N_;
+  res_.v = std::move(v_);
+  res_.edges = topo_.edges;
+  return std::move(res_);
+}
+
+}  // namespace
+
+NormalFilterResult filter_normals(const PreparedMesh& mesh, const NormalFilterOptions& o,
+                                  const NormalFilterWeights& weights, const ProgressCallback& progress,
+                                  const Eigen::MatrixXd& normals0) {
+  o.validate();
+  if (mesh.num_faces() == 0) throw InvalidInput("normal filtering: the mesh has no faces");
+  return NormalFilterRun(mesh, o, weights, normals0).run(progress);
 }
 
 }  // namespace msmesh

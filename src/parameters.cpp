@@ -81,6 +81,14 @@ void check_parameter(const ParameterInfo& p, double value, const std::string& as
   throw InvalidInput(os.str());
 }
 
+void check_parameter(const std::string& group, const std::string& name, double value, const ParameterRange& range) {
+  ParameterInfo p;
+  p.name = name;
+  p.group = group;
+  p.range = range;
+  check_parameter(p, value);
+}
+
 double parse_parameter(const ParameterInfo& p, const std::string& text, const std::string& as_typed) {
   const std::string who = as_typed.empty() ? p.name : as_typed;
   if (p.type == ParameterType::Boolean) {

@@ -5,6 +5,7 @@
 #include <utility>
 #include <cmath>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "msmesh/errors.h"
@@ -14,21 +15,20 @@ namespace msmesh::detail {
 
 namespace {
 
-// Sums of three columns, K of them at once, in a fixed order (parallel.h).
-template <int K, class Body>
-std::array<std::array<double, 3>, K> column_sums(Eigen::Index n, Body&& body) {
-  const auto flat = deterministic_sums<3 * K>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<double, 3 * K>& s) {
-    std::array<std::array<double, 3>, K> t{};
+// Sums of C columns, K of them at once, in a fixed order (parallel.h).
+template <int C, int K, class Body>
+std::array<std::array<double, C>, K> column_sums(Eigen::Index n, Body&& body) {
+  const auto flat = deterministic_sums<C * K>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<double, C * K>& s) {
+    std::array<std::array<double, C>, K> t{};
     body(i0, i1, t);
     for (int k = 0; k < K; ++k)
-      for (int c = 0; c < 3; ++c) s[3 * k + c] += t[k][c];
+      for (int c = 0; c < C; ++c) s[C * k + c] += t[k][c];
   });
-  std::array<std::array<double, 3>, K> out{};
+  std::array<std::array<double, C>, K> out{};
   for (int k = 0; k < K; ++k)
-    for (int c = 0; c < 3; ++c) out[k][c] = flat[3 * k + c];
+    for (int c = 0; c < C; ++c) out[k][c] = flat[C * k + c];
   return out;
 }
-using Sums = std::array<double, 3>;
 
 }  // namespace
 
@@ -100,12 +100,13 @@ std::vector<int> reverse_cuthill_mckee(const RowSparse& A) {
 
 }  // namespace
 
-BlockPcg::BlockPcg(const Eigen::SparseMatrix<double>& A) {
+BlockPcg::BlockPcg(const Eigen::SparseMatrix<double>& A, bool reorder) {
   const RowSparse A0(A);
   const Eigen::Index n = A0.rows();
-  perm_ = reverse_cuthill_mckee(A0);
+  if (reorder) perm_ = reverse_cuthill_mckee(A0);
+  auto old_row = [&](Eigen::Index i) { return perm_.empty() ? static_cast<int>(i) : perm_[static_cast<size_t>(i)]; };
   std::vector<int> inverse(static_cast<size_t>(n));
-  for (Eigen::Index i = 0; i < n; ++i) inverse[static_cast<size_t>(perm_[static_cast<size_t>(i)])] = static_cast<int>(i);
+  for (Eigen::Index i = 0; i < n; ++i) inverse[static_cast<size_t>(old_row(i))] = static_cast<int>(i);
   // A_ = P A Pᵀ in compressed row-major form, columns sorted within each row.
   A_.resize(n, n);
   A_.resizeNonZeros(A0.nonZeros());
@@ -116,7 +117,7 @@ BlockPcg::BlockPcg(const Eigen::SparseMatrix<double>& A) {
   std::vector<std::pair<int, double>> row;
   for (Eigen::Index i = 0; i < n; ++i) {
     row.clear();
-    for (RowSparse::InnerIterator it(A0, perm_[static_cast<size_t>(i)]); it; ++it)
+    for (RowSparse::InnerIterator it(A0, old_row(i)); it; ++it)
       row.emplace_back(inverse[static_cast<size_t>(it.col())], it.value());
     std::sort(row.begin(), row.end());
     int k = outer[i];
@@ -126,81 +127,129 @@ BlockPcg::BlockPcg(const Eigen::SparseMatrix<double>& A) {
     }
     outer[i + 1] = k;
   }
+  diag_pos_.assign(static_cast<size_t>(n), -1);
   inv_diag_.resize(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     double d = 0;
-    for (RowSparse::InnerIterator it(A_, i); it; ++it)
-      if (it.col() == i) d += it.value();
-    if (!(d > 0) || !std::isfinite(d)) {
-      std::ostringstream os;
-      os << "conjugate gradients: diagonal entry " << perm_[static_cast<size_t>(i)] << " = " << d
-         << " is not positive";
-      throw SolverError(os.str());
+    for (int j = outer[i]; j < outer[i + 1]; ++j)
+      if (inner[j] == i) {
+        d += val[j];
+        diag_pos_[static_cast<size_t>(i)] = j;
+      }
+    if (bad_row_ < 0 && (!(d > 0) || !std::isfinite(d))) {
+      bad_row_ = old_row(i);
+      bad_value_ = d;
     }
     inv_diag_(i) = 1.0 / d;
   }
 }
 
+void BlockPcg::set_diagonal(const Eigen::VectorXd& d) {
+  const Eigen::Index n = A_.rows();
+  double* val = A_.valuePtr();
+  bad_row_ = -1;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Eigen::Index o = perm_.empty() ? i : perm_[static_cast<size_t>(i)];
+    const double di = d(o);
+    const int j = diag_pos_[static_cast<size_t>(i)];
+    if (j < 0) throw SolverError("conjugate gradients: the matrix does not store diagonal entry " + std::to_string(o));
+    val[j] = di;
+    if (bad_row_ < 0 && (!(di > 0) || !std::isfinite(di))) {
+      bad_row_ = o;
+      bad_value_ = di;
+    }
+    inv_diag_(i) = 1.0 / di;
+  }
+}
+
 PcgStats BlockPcg::solve(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance, int max_iterations,
                          const std::string& what) const {
+  return solve_reordered<3>(B, X, relative_tolerance, max_iterations, what);
+}
+
+PcgStats BlockPcg::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance, int max_iterations,
+                         const std::string& what) const {
+  return solve_reordered<1>(b, x, relative_tolerance, max_iterations, what);
+}
+
+template <int K, class M>
+PcgStats BlockPcg::solve_reordered(const M& B, M& X, double relative_tolerance, int max_iterations,
+                                   const std::string& what) const {
+  if (bad_row_ >= 0) {
+    std::ostringstream os;
+    os << "conjugate gradients: diagonal entry " << bad_row_ << " = " << bad_value_ << " is not positive";
+    throw SolverError(os.str());
+  }
+  if (perm_.empty()) return solve_permuted<K>(B.data(), X.data(), relative_tolerance, max_iterations, what);
   const Eigen::Index n = A_.rows();
-  Bp_.resize(n, 3);
-  Xp_.resize(n, 3);
+  Bp_.resize(static_cast<size_t>(K * n));
+  Xp_.resize(static_cast<size_t>(K * n));
   parallel_for(n, [&](Eigen::Index i) {
     const Eigen::Index o = perm_[static_cast<size_t>(i)];
-    Bp_.row(i) = B.row(o);
-    Xp_.row(i) = X.row(o);
+    for (int c = 0; c < K; ++c) {
+      Bp_[static_cast<size_t>(K * i + c)] = B.data()[K * o + c];
+      Xp_[static_cast<size_t>(K * i + c)] = X.data()[K * o + c];
+    }
   });
-  const PcgStats st = solve_permuted(Bp_, Xp_, relative_tolerance, max_iterations, what);
-  parallel_for(n, [&](Eigen::Index i) { X.row(perm_[static_cast<size_t>(i)]) = Xp_.row(i); });
+  const PcgStats st = solve_permuted<K>(Bp_.data(), Xp_.data(), relative_tolerance, max_iterations, what);
+  parallel_for(n, [&](Eigen::Index i) {
+    const Eigen::Index o = perm_[static_cast<size_t>(i)];
+    for (int c = 0; c < K; ++c) X.data()[K * o + c] = Xp_[static_cast<size_t>(K * i + c)];
+  });
   return st;
 }
 
-PcgStats BlockPcg::solve_permuted(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance,
-                                  int max_iterations, const std::string& what) const {
+// CG on the reordered system, B and X n by K row-major (element (i, c) at K·i + c).
+template <int K>
+PcgStats BlockPcg::solve_permuted(const double* B, double* X, double relative_tolerance, int max_iterations,
+                                  const std::string& what) const {
+  using Sums = std::array<double, K>;
   const Eigen::Index n = A_.rows();
   const int* outer = A_.outerIndexPtr();
   const int* inner = A_.innerIndexPtr();
   const double* val = A_.valuePtr();
   const double* inv_d = inv_diag_.data();
   // Work space kept between calls (no allocation, no page faults in the iterations).
-  R_.resize(n, 3);
-  P_.resize(n, 3);
-  Q_.resize(n, 3);
-  RowMatrixX3 &R = R_, &P = P_, &Q = Q_;
+  R_.resize(static_cast<size_t>(K * n));
+  P_.resize(static_cast<size_t>(K * n));
+  Q_.resize(static_cast<size_t>(K * n));
+  double* Rp = R_.data();
+  double* Pw = P_.data();
+  double* Qp = Q_.data();
 
   // r = b − A x, p = D⁻¹ r; sums: ‖b‖², r·D⁻¹r, ‖r‖².
-  const auto s0 = column_sums<3>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 3>& s) {
+  const auto s0 = column_sums<K, 3>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 3>& s) {
     for (Eigen::Index i = i0; i < i1; ++i) {
-      double ax[3] = {0, 0, 0};
+      double ax[K] = {};
       for (int j = outer[i]; j < outer[i + 1]; ++j)
-        for (int c = 0; c < 3; ++c) ax[c] += val[j] * X(inner[j], c);
-      for (int c = 0; c < 3; ++c) {
-        const double r = B(i, c) - ax[c], z = r * inv_d[i];
-        R(i, c) = r;
-        P(i, c) = z;
-        s[0][c] += B(i, c) * B(i, c);
+        for (int c = 0; c < K; ++c) ax[c] += val[j] * X[K * static_cast<Eigen::Index>(inner[j]) + c];
+      for (int c = 0; c < K; ++c) {
+        const double b = B[K * i + c], r = b - ax[c], z = r * inv_d[i];
+        Rp[K * i + c] = r;
+        Pw[K * i + c] = z;
+        s[0][c] += b * b;
         s[1][c] += r * z;
         s[2][c] += r * r;
       }
     }
   });
   Sums tol{}, rz = s0[1];
-  std::array<bool, 3> done{};
+  std::array<bool, K> done{};
   PcgStats stats;
-  for (int c = 0; c < 3; ++c) {
+  for (int c = 0; c < K; ++c) {
     tol[c] = relative_tolerance * std::sqrt(s0[0][c]);
     if (s0[0][c] == 0) {  // b = 0: the solution is 0
-      X.col(c).setZero();
+      for (Eigen::Index i = 0; i < n; ++i) X[K * i + c] = 0;
       done[c] = true;
       continue;
     }
     done[c] = std::sqrt(s0[2][c]) <= tol[c];
     if (!done[c]) stats.relative_residual = std::max(stats.relative_residual, std::sqrt(s0[2][c] / s0[0][c]));
   }
-  auto all_done = [&] { return done[0] && done[1] && done[2]; };
-  for (int c = 0; c < 3; ++c)
-    if (done[c]) P.col(c).setZero();
+  auto all_done = [&] { return std::all_of(done.begin(), done.end(), [](bool d) { return d; }); };
+  for (int c = 0; c < K; ++c)
+    if (done[c])
+      for (Eigen::Index i = 0; i < n; ++i) Pw[K * i + c] = 0;
 
   int it = 0;
   while (!all_done()) {
@@ -211,67 +260,50 @@ PcgStats BlockPcg::solve_permuted(const RowMatrixX3& B, RowMatrixX3& X, double r
       throw SolverError(os.str());
     }
     // q = A p, p·q.
-    const double* Pp = P.data();
-    double* Qp = Q.data();
-    const auto s1 = column_sums<1>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 1>& s) {
-      const double* __restrict p = Pp;
+    const auto s1 = column_sums<K, 1>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 1>& s) {
+      const double* __restrict p = Pw;
       double* __restrict q = Qp;
-      double s_0 = 0, s_1 = 0, s_2 = 0;
+      Sums pq{};
       for (Eigen::Index i = i0; i < i1; ++i) {
-        double a0 = 0, a1 = 0, a2 = 0;
+        double a[K] = {};
         const int j1 = outer[i + 1];
         for (int j = outer[i]; j < j1; ++j) {
-          const double a = val[j];
-          const double* pj = p + 3 * static_cast<Eigen::Index>(inner[j]);
-          a0 += a * pj[0];
-          a1 += a * pj[1];
-          a2 += a * pj[2];
+          const double av = val[j];
+          const double* pj = p + K * static_cast<Eigen::Index>(inner[j]);
+          for (int c = 0; c < K; ++c) a[c] += av * pj[c];
         }
-        q[3 * i] = a0;
-        q[3 * i + 1] = a1;
-        q[3 * i + 2] = a2;
-        s_0 += p[3 * i] * a0;
-        s_1 += p[3 * i + 1] * a1;
-        s_2 += p[3 * i + 2] * a2;
+        for (int c = 0; c < K; ++c) q[K * i + c] = a[c];
+        for (int c = 0; c < K; ++c) pq[c] += p[K * i + c] * a[c];
       }
-      s[0] = {s_0, s_1, s_2};
+      s[0] = pq;
     });
     Sums alpha{};
-    for (int c = 0; c < 3; ++c) alpha[c] = done[c] ? 0.0 : rz[c] / s1[0][c];
+    for (int c = 0; c < K; ++c) alpha[c] = done[c] ? 0.0 : rz[c] / s1[0][c];
     // x += α p, r −= α q; sums: r·D⁻¹r, ‖r‖².
-    double* Xp = X.data();
-    double* Rp = R.data();
-    const double al0 = alpha[0], al1 = alpha[1], al2 = alpha[2];
-    const auto s2 = column_sums<2>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 2>& s) {
-      double* __restrict x = Xp;
+    const auto s2 = column_sums<K, 2>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 2>& s) {
+      double* __restrict x = X;
       double* __restrict r = Rp;
-      const double* __restrict p = Pp;
+      const double* __restrict p = Pw;
       const double* __restrict q = Qp;
       const double* __restrict id = inv_d;
-      double rz0 = 0, rz1 = 0, rz2 = 0, rr0 = 0, rr1 = 0, rr2 = 0;
+      Sums rzs{}, rrs{};
       for (Eigen::Index i = i0; i < i1; ++i) {
-        const Eigen::Index b = 3 * i;
-        x[b] += al0 * p[b];
-        x[b + 1] += al1 * p[b + 1];
-        x[b + 2] += al2 * p[b + 2];
-        const double r0 = r[b] - al0 * q[b], r1 = r[b + 1] - al1 * q[b + 1], r2 = r[b + 2] - al2 * q[b + 2];
-        r[b] = r0;
-        r[b + 1] = r1;
-        r[b + 2] = r2;
+        const Eigen::Index b = K * i;
+        for (int c = 0; c < K; ++c) x[b + c] += alpha[c] * p[b + c];
         const double di = id[i];
-        rz0 += r0 * r0 * di;
-        rz1 += r1 * r1 * di;
-        rz2 += r2 * r2 * di;
-        rr0 += r0 * r0;
-        rr1 += r1 * r1;
-        rr2 += r2 * r2;
+        for (int c = 0; c < K; ++c) {
+          const double rc = r[b + c] - alpha[c] * q[b + c];
+          r[b + c] = rc;
+          rzs[c] += rc * rc * di;
+          rrs[c] += rc * rc;
+        }
       }
-      s[0] = {rz0, rz1, rz2};
-      s[1] = {rr0, rr1, rr2};
+      s[0] = rzs;
+      s[1] = rrs;
     });
     Sums beta{};
     stats.relative_residual = 0;
-    for (int c = 0; c < 3; ++c) {
+    for (int c = 0; c < K; ++c) {
       if (done[c]) continue;
       if (!std::isfinite(s2[1][c]) || !std::isfinite(alpha[c]))
         throw SolverError(what + ": conjugate gradients broke down (non-finite values)");
@@ -287,17 +319,13 @@ PcgStats BlockPcg::solve_permuted(const RowMatrixX3& B, RowMatrixX3& X, double r
     if (all_done()) break;
     // p = D⁻¹ r + β p (0 for the columns that are done).
     Sums keep{};
-    for (int c = 0; c < 3; ++c) keep[c] = done[c] ? 0.0 : 1.0;
-    double* Pw = P.data();
-    const double k0 = keep[0], k1 = keep[1], k2 = keep[2], b0 = beta[0], b1 = beta[1], b2 = beta[2];
+    for (int c = 0; c < K; ++c) keep[c] = done[c] ? 0.0 : 1.0;
     parallel_for_blocks(n, [&](Eigen::Index i0, Eigen::Index i1) {
       double* __restrict p = Pw;
       const double* __restrict r = Rp;
       for (Eigen::Index i = i0; i < i1; ++i) {
         const double di = inv_d[i];
-        p[3 * i] = k0 * (r[3 * i] * di + b0 * p[3 * i]);
-        p[3 * i + 1] = k1 * (r[3 * i + 1] * di + b1 * p[3 * i + 1]);
-        p[3 * i + 2] = k2 * (r[3 * i + 2] * di + b2 * p[3 * i + 2]);
+        for (int c = 0; c < K; ++c) p[K * i + c] = keep[c] * (r[K * i + c] * di + beta[c] * p[K * i + c]);
       }
     });
   }

@@ -25,24 +25,43 @@ struct PcgStats {
   double relative_residual = 0.0;  ///< max over the columns of ‖b − Ax‖ / ‖b‖
 };
 
+/// Jacobi-preconditioned CG on a sparse SPD matrix, for 3 right-hand sides at once (the
+/// constant N-step and vertex systems) or one (the v-step, whose diagonal changes between
+/// solves: set_diagonal). The one CG of the library.
 class BlockPcg {
  public:
-  /// `A` must be symmetric positive definite with a positive diagonal.
-  explicit BlockPcg(const Eigen::SparseMatrix<double>& A);
+  /// `A` must be symmetric positive definite with a positive diagonal, every diagonal entry
+  /// stored. `reorder`: work in reverse Cuthill–McKee order (pays off over many sweeps; costs
+  /// a permutation of B and X per solve).
+  explicit BlockPcg(const Eigen::SparseMatrix<double>& A, bool reorder = true);
+  /// Replaces the diagonal of A by d (#rows, original order).
+  void set_diagonal(const Eigen::VectorXd& d);
   /// Solves A X = B (n by 3) in place, X holding the warm start. Stops when every column's
   /// residual is below `relative_tolerance` × ‖b‖ (or exactly 0). Throws SolverError naming
-  /// `what` when `max_iterations` do not suffice or the numbers stop being finite.
+  /// `what` when `max_iterations` do not suffice, the numbers stop being finite or the
+  /// diagonal is not positive.
   PcgStats solve(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance, int max_iterations,
+                 const std::string& what) const;
+  /// The same for one right-hand side b (n), x holding the warm start.
+  PcgStats solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance, int max_iterations,
                  const std::string& what) const;
   Eigen::Index size() const { return A_.rows(); }
 
  private:
-  PcgStats solve_permuted(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance, int max_iterations,
+  template <int K, class M>
+  PcgStats solve_reordered(const M& B, M& X, double relative_tolerance, int max_iterations,
+                           const std::string& what) const;
+  template <int K>
+  PcgStats solve_permuted(const double* B, double* X, double relative_tolerance, int max_iterations,
                           const std::string& what) const;
-  std::vector<int> perm_;  // reverse Cuthill–McKee: position i holds original row perm_[i]
-  RowSparse A_;            // P A Pᵀ
+  std::vector<int> perm_;      // reverse Cuthill–McKee: position i holds original row perm_[i]; empty: none
+  std::vector<int> diag_pos_;  // index of row i's diagonal entry in A_'s values
+  RowSparse A_;                // P A Pᵀ
   Eigen::VectorXd inv_diag_;
-  mutable RowMatrixX3 R_, P_, Q_, Bp_, Xp_;  // work space (not thread-safe: one solve at a time)
+  Eigen::Index bad_row_ = -1;  // a row (original order) whose diagonal is not positive, or -1
+  double bad_value_ = 0;
+  // Work space, n by K row-major (not thread-safe: one solve at a time).
+  mutable std::vector<double> R_, P_, Q_, Bp_, Xp_;
 };
 
 /// Copies between Eigen's default column-major #rows by 3 matrices and the row-major layout.

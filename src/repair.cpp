@@ -17,19 +17,14 @@
 
 #include "msmesh/errors.h"
 #include "msmesh/topology.h"
+#include "check.h"
 
 namespace msmesh {
 
 void RepairOptions::validate() const {
-  auto fail = [](const char* name, double value, const char* range) {
-    std::ostringstream os;
-    os << "repair: " << name << " = " << value << " is out of range; valid: " << range;
-    throw InvalidInput(os.str());
-  };
-  if (!(std::isfinite(weld_tolerance) && weld_tolerance >= 0 && weld_tolerance <= 1))
-    fail("weld_tolerance", weld_tolerance, "[0, 1] (a fraction of the mean edge length)");
-  if (!(std::isfinite(zero_area_tolerance) && zero_area_tolerance >= 0 && zero_area_tolerance <= 1))
-    fail("zero_area_tolerance", zero_area_tolerance, "[0, 1] (a fraction of the squared mean edge length)");
+  // Fractions of the mean edge length and of its square.
+  detail::check_range("repair", "weld_tolerance", weld_tolerance, {0, 1});
+  detail::check_range("repair", "zero_area_tolerance", zero_area_tolerance, {0, 1});
 }
 
 bool RepairReport::changed() const {
@@ -55,6 +50,7 @@ std::vector<std::string> RepairReport::actions() const {
 namespace {
 
 using Edge = std::pair<int, int>;  // (min, max)
+using Faces = std::vector<std::array<int, 3>>;
 
 struct EdgeHash {
   std::size_t operator()(const Edge& e) const {
@@ -181,199 +177,188 @@ std::unordered_map<Edge, std::vector<std::pair<int, int>>, EdgeHash> edge_faces(
   return m;
 }
 
-}  // namespace
+// 1. Duplicate vertices: redirect faces to the first vertex of each cluster (within `tol`).
+void merge_duplicate_vertices(const Eigen::MatrixXd& V, double tol, Faces& F, RepairReport& r) {
+  const int nv0 = static_cast<int>(V.rows());
+  std::vector<bool> referenced(nv0, false);
+  for (const auto& f : F)
+    for (int v : f) referenced[v] = true;
+  const std::vector<int> rep = weld(V, referenced, tol);
+  for (int i = 0; i < nv0; ++i) r.merged_vertices += rep[i] != i;
+  for (auto& f : F)
+    for (int& v : f) v = rep[v];
+}
 
-RepairReport repair_mesh(Mesh& mesh, const RepairOptions& o) {
-  o.validate();
-  check_input(mesh);
-  RepairReport r;
-  r.vertices_before = mesh.V.rows();
-  r.faces_before = mesh.F.rows();
-  const int nv0 = static_cast<int>(mesh.V.rows());
-
-  std::vector<std::array<int, 3>> F(static_cast<std::size_t>(mesh.F.rows()));
-  std::vector<int> origin(F.size());
+// 2. Degenerate, zero-area and duplicate faces (the first of equal faces is kept); `origin`
+// follows the faces.
+void remove_bad_faces(const Eigen::MatrixXd& V, const RepairOptions& o, double L, Faces& F, std::vector<int>& origin,
+                      RepairReport& r) {
+  Faces kept;
+  std::vector<int> kept_origin;
+  kept.reserve(F.size());
+  std::map<std::array<int, 3>, int> seen;
+  const double area_floor = o.zero_area_tolerance * L * L;
   for (std::size_t f = 0; f < F.size(); ++f) {
-    for (int k = 0; k < 3; ++k) F[f][k] = mesh.F(static_cast<Eigen::Index>(f), k);
-    origin[f] = static_cast<int>(f);
-  }
-  const double L = mean_face_edge_length(mesh.V, F);
-
-  // 1. Duplicate vertices: redirect faces to the first vertex of each cluster.
-  if (o.merge_duplicate_vertices) {
-    std::vector<bool> referenced(nv0, false);
-    for (const auto& f : F)
-      for (int v : f) referenced[v] = true;
-    const std::vector<int> rep = weld(mesh.V, referenced, o.weld_tolerance * L);
-    for (int i = 0; i < nv0; ++i) r.merged_vertices += rep[i] != i;
-    for (auto& f : F)
-      for (int& v : f) v = rep[v];
-  }
-
-  // 2. Degenerate, zero-area and duplicate faces (the first of equal faces is kept).
-  {
-    std::vector<std::array<int, 3>> kept;
-    std::vector<int> kept_origin;
-    kept.reserve(F.size());
-    std::map<std::array<int, 3>, int> seen;
-    const double area_floor = o.zero_area_tolerance * L * L;
-    for (std::size_t f = 0; f < F.size(); ++f) {
-      const auto& t = F[f];
-      if (o.remove_degenerate_faces) {
-        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
-          ++r.degenerate_faces_removed;
-          continue;
-        }
-        const Eigen::Vector3d a = mesh.V.row(t[0]), b = mesh.V.row(t[1]), c = mesh.V.row(t[2]);
-        if (0.5 * (b - a).cross(c - a).norm() <= area_floor) {
-          ++r.zero_area_faces_removed;
-          continue;
-        }
+    const auto& t = F[f];
+    if (o.remove_degenerate_faces) {
+      if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+        ++r.degenerate_faces_removed;
+        continue;
       }
-      if (o.remove_duplicate_faces) {
-        std::array<int, 3> key = t;
-        std::sort(key.begin(), key.end());
-        if (!seen.emplace(key, static_cast<int>(f)).second) {
-          ++r.duplicate_faces_removed;
-          continue;
-        }
-      }
-      kept.push_back(t);
-      kept_origin.push_back(origin[f]);
-    }
-    F = std::move(kept);
-    origin = std::move(kept_origin);
-  }
-
-  // 3. Non-manifold vertices (and the ends of non-manifold edges): one vertex per fan of faces
-  //    joined through manifold edges. The fan with the lowest face keeps the vertex.
-  std::vector<int> source_vertex(nv0);  // row of the input a vertex copies its attributes from
-  std::iota(source_vertex.begin(), source_vertex.end(), 0);
-  if (o.split_non_manifold && !F.empty()) {
-    const std::vector<std::array<int, 3>> F0 = F;  // connectivity before any split
-    const auto ef = edge_faces(F0);
-    std::vector<std::vector<int>> vertex_faces(nv0);
-    for (int f = 0; f < static_cast<int>(F.size()); ++f)
-      for (int v : F[f]) vertex_faces[v].push_back(f);
-    for (int v = 0; v < nv0; ++v) {
-      const auto& faces = vertex_faces[v];
-      if (faces.size() < 2) continue;
-      // Union-find over the faces around v.
-      std::unordered_map<int, int> slot;
-      for (std::size_t i = 0; i < faces.size(); ++i) slot[faces[i]] = static_cast<int>(i);
-      std::vector<int> parent(faces.size());
-      std::iota(parent.begin(), parent.end(), 0);
-      auto find = [&](int x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-      };
-      for (int f : faces)
-        for (int k = 0; k < 3; ++k) {
-          const int w = F0[f][k];
-          if (w == v) continue;
-          const auto& on = ef.at(undirected(v, w));
-          if (on.size() != 2) continue;
-          const int a = find(slot[on[0].first]), b = find(slot[on[1].first]);
-          parent[std::max(a, b)] = std::min(a, b);
-        }
-      std::map<int, int> group_vertex;  // root -> vertex index
-      for (std::size_t i = 0; i < faces.size(); ++i) {
-        const int root = find(static_cast<int>(i));
-        auto it = group_vertex.find(root);
-        if (it == group_vertex.end()) {
-          const int nv_now = static_cast<int>(source_vertex.size());
-          const int target = group_vertex.empty() ? v : nv_now;
-          if (target != v) {
-            source_vertex.push_back(v);
-            ++r.split_vertices;
-          }
-          it = group_vertex.emplace(root, target).first;
-        }
-        for (int& c : F[faces[i]])
-          if (c == v) c = it->second;
+      const Eigen::Vector3d a = V.row(t[0]), b = V.row(t[1]), c = V.row(t[2]);
+      if (0.5 * (b - a).cross(c - a).norm() <= area_floor) {
+        ++r.zero_area_faces_removed;
+        continue;
       }
     }
+    if (o.remove_duplicate_faces) {
+      std::array<int, 3> key = t;
+      std::sort(key.begin(), key.end());
+      if (!seen.emplace(key, static_cast<int>(f)).second) {
+        ++r.duplicate_faces_removed;
+        continue;
+      }
+    }
+    kept.push_back(t);
+    kept_origin.push_back(origin[f]);
   }
+  F = std::move(kept);
+  origin = std::move(kept_origin);
+}
+
+// 3. Non-manifold vertices (and the ends of non-manifold edges): one vertex per fan of faces
+//    joined through manifold edges. The fan with the lowest face keeps the vertex. Appends the
+//    new vertices to `source_vertex` (the input row each vertex copies its attributes from).
+void split_non_manifold_vertices(int nv0, Faces& F, std::vector<int>& source_vertex, RepairReport& r) {
+  const Faces F0 = F;  // connectivity before any split
+  const auto ef = edge_faces(F0);
+  std::vector<std::vector<int>> vertex_faces(nv0);
+  for (int f = 0; f < static_cast<int>(F.size()); ++f)
+    for (int v : F[f]) vertex_faces[v].push_back(f);
+  for (int v = 0; v < nv0; ++v) {
+    const auto& faces = vertex_faces[v];
+    if (faces.size() < 2) continue;
+    // Union-find over the faces around v.
+    std::unordered_map<int, int> slot;
+    for (std::size_t i = 0; i < faces.size(); ++i) slot[faces[i]] = static_cast<int>(i);
+    std::vector<int> parent(faces.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    auto find = [&](int x) {
+      while (parent[x] != x) x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    for (int f : faces)
+      for (int k = 0; k < 3; ++k) {
+        const int w = F0[f][k];
+        if (w == v) continue;
+        const auto& on = ef.at(undirected(v, w));
+        if (on.size() != 2) continue;
+        const int a = find(slot[on[0].first]), b = find(slot[on[1].first]);
+        parent[std::max(a, b)] = std::min(a, b);
+      }
+    std::map<int, int> group_vertex;  // root -> vertex index
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+      const int root = find(static_cast<int>(i));
+      auto it = group_vertex.find(root);
+      if (it == group_vertex.end()) {
+        const int nv_now = static_cast<int>(source_vertex.size());
+        const int target = group_vertex.empty() ? v : nv_now;
+        if (target != v) {
+          source_vertex.push_back(v);
+          ++r.split_vertices;
+        }
+        it = group_vertex.emplace(root, target).first;
+      }
+      for (int& c : F[faces[i]])
+        if (c == v) c = it->second;
+    }
+  }
+}
+
+// 4. Orientation: breadth-first over manifold edges from each component's first face; open
+// components keep the orientation of most of their faces, closed orientable ones face outwards.
+void orient_faces(const Eigen::MatrixXd& V, const std::vector<int>& source_vertex, Faces& F, RepairReport& r) {
+  const auto ef = edge_faces(F);
+  const int nf = static_cast<int>(F.size());
+  std::vector<int> flip(nf, -1), comp(nf, -1);
+  std::vector<bool> comp_closed, comp_bad;
+  for (int seed = 0; seed < nf; ++seed) {
+    if (comp[seed] >= 0) continue;
+    const int c = static_cast<int>(comp_closed.size());
+    comp_closed.push_back(true);
+    comp_bad.push_back(false);
+    std::queue<int> q;
+    q.push(seed);
+    comp[seed] = c;
+    flip[seed] = 0;
+    while (!q.empty()) {
+      const int f = q.front();
+      q.pop();
+      for (int k = 0; k < 3; ++k) {
+        const int a = F[f][k], b = F[f][(k + 1) % 3];
+        const auto& on = ef.at(undirected(a, b));
+        if (on.size() != 2) {
+          comp_closed[c] = false;
+          // Faces across a non-manifold edge still belong to the component (oriented by
+          // their other edges where possible).
+          for (const auto& [g, dir] : on)
+            if (comp[g] < 0) {
+              comp[g] = c;
+              flip[g] = 0;
+              q.push(g);
+            }
+          continue;
+        }
+        const auto& [f0, d0] = on[0];
+        const auto& [f1, d1] = on[1];
+        const int g = f0 == f ? f1 : f0;
+        // Same walking direction -> one of the two must flip.
+        const int want = flip[f] ^ (d0 == d1 ? 1 : 0);
+        if (comp[g] < 0) {
+          comp[g] = c;
+          flip[g] = want;
+          q.push(g);
+        } else if (flip[g] != want) {
+          comp_bad[c] = true;
+        }
+      }
+    }
+  }
+  // Open components keep the orientation of the majority of their faces.
+  std::vector<int> comp_faces(comp_closed.size(), 0), comp_flips(comp_closed.size(), 0);
+  for (int f = 0; f < nf; ++f) ++comp_faces[comp[f]], comp_flips[comp[f]] += flip[f];
+  for (int f = 0; f < nf; ++f)
+    if (!comp_closed[comp[f]] && 2 * comp_flips[comp[f]] > comp_faces[comp[f]]) flip[f] ^= 1;
+  for (int f = 0; f < nf; ++f)
+    if (flip[f]) std::swap(F[f][1], F[f][2]);
+  // Closed, orientable components face outwards: positive signed volume.
+  std::vector<double> volume(comp_closed.size(), 0.0);
+  for (int f = 0; f < nf; ++f) {
+    const Eigen::Vector3d a = V.row(source_vertex[F[f][0]]), b = V.row(source_vertex[F[f][1]]),
+                          cc = V.row(source_vertex[F[f][2]]);
+    volume[comp[f]] += a.dot(b.cross(cc)) / 6.0;
+  }
+  for (int f = 0; f < nf; ++f) {
+    const int c = comp[f];
+    if (comp_closed[c] && !comp_bad[c] && volume[c] < 0) {
+      std::swap(F[f][1], F[f][2]);
+      flip[f] ^= 1;
+    }
+    r.flipped_faces += flip[f];
+  }
+  for (bool bad : comp_bad) r.non_orientable_components += bad;
+}
+
+// 5. Vertices: copies from splitting, then (optionally) only the referenced ones; writes V,
+// the vertex attributes and F into `mesh` and the vertex map into r.
+void store_result(Mesh& mesh, const std::vector<int>& source_vertex, bool remove_unreferenced, Faces& F,
+                  RepairReport& r) {
+  const int nv0 = static_cast<int>(mesh.V.rows());
   const int nv1 = static_cast<int>(source_vertex.size());
-
-  // 4. Orientation: breadth-first over manifold edges from each component's first face.
-  if (o.orient && !F.empty()) {
-    const auto ef = edge_faces(F);
-    const int nf = static_cast<int>(F.size());
-    std::vector<int> flip(nf, -1), comp(nf, -1);
-    std::vector<bool> comp_closed, comp_bad;
-    for (int seed = 0; seed < nf; ++seed) {
-      if (comp[seed] >= 0) continue;
-      const int c = static_cast<int>(comp_closed.size());
-      comp_closed.push_back(true);
-      comp_bad.push_back(false);
-      std::queue<int> q;
-      q.push(seed);
-      comp[seed] = c;
-      flip[seed] = 0;
-      while (!q.empty()) {
-        const int f = q.front();
-        q.pop();
-        for (int k = 0; k < 3; ++k) {
-          const int a = F[f][k], b = F[f][(k + 1) % 3];
-          const auto& on = ef.at(undirected(a, b));
-          if (on.size() != 2) {
-            comp_closed[c] = false;
-            // Faces across a non-manifold edge still belong to the component (oriented by
-            // their other edges where possible).
-            for (const auto& [g, dir] : on)
-              if (comp[g] < 0) {
-                comp[g] = c;
-                flip[g] = 0;
-                q.push(g);
-              }
-            continue;
-          }
-          const auto& [f0, d0] = on[0];
-          const auto& [f1, d1] = on[1];
-          const int g = f0 == f ? f1 : f0;
-          // Same walking direction -> one of the two must flip.
-          const int want = flip[f] ^ (d0 == d1 ? 1 : 0);
-          if (comp[g] < 0) {
-            comp[g] = c;
-            flip[g] = want;
-            q.push(g);
-          } else if (flip[g] != want) {
-            comp_bad[c] = true;
-          }
-        }
-      }
-    }
-    // Open components keep the orientation of the majority of their faces.
-    std::vector<int> comp_faces(comp_closed.size(), 0), comp_flips(comp_closed.size(), 0);
-    for (int f = 0; f < nf; ++f) ++comp_faces[comp[f]], comp_flips[comp[f]] += flip[f];
-    for (int f = 0; f < nf; ++f)
-      if (!comp_closed[comp[f]] && 2 * comp_flips[comp[f]] > comp_faces[comp[f]]) flip[f] ^= 1;
-    for (int f = 0; f < nf; ++f)
-      if (flip[f]) std::swap(F[f][1], F[f][2]);
-    // Closed, orientable components face outwards: positive signed volume.
-    std::vector<double> volume(comp_closed.size(), 0.0);
-    for (int f = 0; f < nf; ++f) {
-      const Eigen::Vector3d a = mesh.V.row(source_vertex[F[f][0]]), b = mesh.V.row(source_vertex[F[f][1]]),
-                            cc = mesh.V.row(source_vertex[F[f][2]]);
-      volume[comp[f]] += a.dot(b.cross(cc)) / 6.0;
-    }
-    for (int f = 0; f < nf; ++f) {
-      const int c = comp[f];
-      if (comp_closed[c] && !comp_bad[c] && volume[c] < 0) {
-        std::swap(F[f][1], F[f][2]);
-        flip[f] ^= 1;
-      }
-      r.flipped_faces += flip[f];
-    }
-    for (bool bad : comp_bad) r.non_orientable_components += bad;
-  }
-
-  // 5. Vertices: copies from splitting, then (optionally) only the referenced ones.
   std::vector<int> rows = source_vertex;  // output vertex i copies input row rows[i]
   std::vector<int> new_index(nv1);
   std::iota(new_index.begin(), new_index.end(), 0);
-  if (o.remove_unreferenced) {
+  if (remove_unreferenced) {
     std::vector<bool> used(nv1, false);
     for (const auto& f : F)
       for (int v : f) used[v] = true;
@@ -392,7 +377,7 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& o) {
     for (auto& f : F)
       for (int& v : f) v = new_index[v];
   }
-  if (static_cast<int>(rows.size()) != nv0 || o.remove_unreferenced) {
+  if (static_cast<int>(rows.size()) != nv0 || remove_unreferenced) {
     Eigen::MatrixXd V(static_cast<Eigen::Index>(rows.size()), 3);
     for (std::size_t i = 0; i < rows.size(); ++i) V.row(static_cast<Eigen::Index>(i)) = mesh.V.row(rows[i]);
     mesh.V = std::move(V);
@@ -406,6 +391,33 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& o) {
 
   r.vertex_map.resize(nv0);
   for (int i = 0; i < nv0; ++i) r.vertex_map(i) = new_index[i];
+}
+
+}  // namespace
+
+RepairReport repair_mesh(Mesh& mesh, const RepairOptions& o) {
+  o.validate();
+  check_input(mesh);
+  RepairReport r;
+  r.vertices_before = mesh.V.rows();
+  r.faces_before = mesh.F.rows();
+  const int nv0 = static_cast<int>(mesh.V.rows());
+
+  Faces F(static_cast<std::size_t>(mesh.F.rows()));
+  std::vector<int> origin(F.size());
+  for (std::size_t f = 0; f < F.size(); ++f) {
+    for (int k = 0; k < 3; ++k) F[f][k] = mesh.F(static_cast<Eigen::Index>(f), k);
+    origin[f] = static_cast<int>(f);
+  }
+  const double L = mean_face_edge_length(mesh.V, F);
+
+  if (o.merge_duplicate_vertices) merge_duplicate_vertices(mesh.V, o.weld_tolerance * L, F, r);
+  remove_bad_faces(mesh.V, o, L, F, origin, r);
+  std::vector<int> source_vertex(nv0);
+  std::iota(source_vertex.begin(), source_vertex.end(), 0);
+  if (o.split_non_manifold && !F.empty()) split_non_manifold_vertices(nv0, F, source_vertex, r);
+  if (o.orient && !F.empty()) orient_faces(mesh.V, source_vertex, F, r);
+  store_result(mesh, source_vertex, o.remove_unreferenced, F, r);
   r.face_origin = Eigen::Map<const Eigen::VectorXi>(origin.data(), static_cast<Eigen::Index>(origin.size()));
   r.vertices_after = mesh.V.rows();
   r.faces_after = mesh.F.rows();

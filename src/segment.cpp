@@ -12,18 +12,13 @@
 #include "msmesh/parameters.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
+#include "msmesh/prepared_mesh.h"
 #include "msmesh/topology.h"
+#include "check.h"
 
 namespace msmesh {
 
 namespace {
-
-void require(bool ok, const char* what, const char* name, double value, const char* range) {
-  if (ok) return;
-  std::ostringstream os;
-  os << what << ": " << name << " = " << value << " is out of range; valid: " << range;
-  throw InvalidInput(os.str());
-}
 
 // Merges segments smaller than min_area into the neighbour with the longest shared boundary,
 // smallest first, until none is left (or it has no neighbour). L: #F labels in [0, k).
@@ -86,11 +81,12 @@ Eigen::VectorXd normalize_edge_field(const Eigen::VectorXd& v) {
   return ((v.array() - lo) / (hi - lo)).matrix();
 }
 
-SegmentResult segment_with_field(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
-                                 const Eigen::VectorXd& v, const SegmentOptions& o, const ProgressCallback& progress) {
-  o.validate();
-  validate_mesh(V, F, "segmentation");
-  const Topology topo = build_topology(F, V.rows());
+namespace {
+
+// segment_with_field on a checked mesh (V, F) with its topology.
+SegmentResult segment_checked(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Topology& topo,
+                              const Eigen::MatrixXd& N, const Eigen::VectorXd& v, const SegmentOptions& o,
+                              const ProgressCallback& progress) {
   if (N.rows() != F.rows() || N.cols() != 3)
     throw InvalidInput("segmentation: normals must be #F by 3 (" + std::to_string(F.rows()) + " by 3), got " +
                        std::to_string(N.rows()) + " by " + std::to_string(N.cols()));
@@ -158,12 +154,21 @@ SegmentResult segment_with_field(const Eigen::MatrixXd& V, const Eigen::MatrixXi
   return r;
 }
 
+}  // namespace
+
+SegmentResult segment_with_field(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
+                                 const Eigen::VectorXd& v, const SegmentOptions& o, const ProgressCallback& progress) {
+  o.validate();
+  validate_mesh(V, F, "segmentation");
+  return segment_checked(V, F, build_topology(F, V.rows()), N, v, o, progress);
+}
+
 SegmentResult segment(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const SegmentOptions& o,
                       const ProgressCallback& progress) {
   o.validate();
-  validate_mesh(V, F, "segmentation");
-  NormalFilterResult nf = filter_normals(V, F, o.normals, {}, progress);
-  SegmentResult r = segment_with_field(V, F, nf.normals, nf.v, o, progress);
+  const PreparedMesh mesh(V, F, "segmentation");  // checked and connected once for both steps
+  NormalFilterResult nf = filter_normals(mesh, o.normals, {}, progress);
+  SegmentResult r = segment_checked(V, F, mesh.topology(), nf.normals, nf.v, o, progress);
   r.normal_report = std::move(nf);
   return r;
 }
@@ -171,8 +176,7 @@ SegmentResult segment(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
 std::vector<std::vector<int>> feature_lines(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
                                             const Eigen::VectorXd& v, double threshold, int min_edges) {
   validate_mesh(V, F, "feature lines");
-  require(std::isfinite(threshold) && threshold > 0 && threshold <= 1, "feature lines", "threshold", threshold,
-          "(0, 1]");
+  detail::check_range("feature lines", "threshold", threshold, {0, 1, true, false});
   const Topology topo = build_topology(F, V.rows());
   if (v.size() != topo.num_edges())
     throw InvalidInput("feature lines: edge field has " + std::to_string(v.size()) + " values for " +

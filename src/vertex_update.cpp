@@ -9,10 +9,8 @@
 #include "msmesh/errors.h"
 #include "msmesh/parameters.h"
 #include "msmesh/geometry.h"
-#include "msmesh/mesh.h"
 #include "msmesh/operators.h"
 #include "msmesh/topology.h"
-#include "normalize.h"
 #include "parallel.h"
 #include "pcg.h"
 #include "sparse_build.h"
@@ -24,6 +22,7 @@ void VertexUpdateOptions::validate() const { check_parameters(vertex_update_para
 
 namespace {
 
+using Rows = detail::RowMatrixX3;
 
 // The vertex opposite edge slot k of face f is F(f,k) (face_edges(f,k) is opposite corner k).
 int opposite_vertex(const Eigen::MatrixXi& F, const Topology& t, int f, Eigen::Index e) {
@@ -32,16 +31,162 @@ int opposite_vertex(const Eigen::MatrixXi& F, const Topology& t, int f, Eigen::I
   return -1;
 }
 
+// Corners of each vertex, (f, k) as 3f + k: those of vertex i are corners[start[i] .. start[i+1]).
+struct VertexCorners {
+  std::vector<int> start, corners;
+};
+
+VertexCorners vertex_corners(const Eigen::MatrixXi& F, Eigen::Index nv) {
+  const Eigen::Index nf = F.rows();
+  VertexCorners c;
+  c.start.assign(static_cast<size_t>(nv) + 1, 0);
+  c.corners.resize(static_cast<size_t>(3 * nf));
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) ++c.start[static_cast<size_t>(F(f, k)) + 1];
+  for (size_t i = 0; i < static_cast<size_t>(nv); ++i) c.start[i + 1] += c.start[i];
+  std::vector<int> fill(c.start.begin(), c.start.end() - 1);
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) c.corners[static_cast<size_t>(fill[static_cast<size_t>(F(f, k))]++)] = static_cast<int>(3 * f + k);
+  return c;
+}
+
+// The four vertices (+,+,−,−) of each interior edge's H row with its v_e, and each vertex's
+// roles in them (4h + r, grouped by vertex like VertexCorners).
+struct EdgeQuads {
+  std::vector<std::array<int, 4>> quad;
+  std::vector<double> quad_v;
+  std::vector<int> role_start, roles;
+};
+
+EdgeQuads edge_quads(const Eigen::MatrixXi& F, const Topology& topo, const Eigen::VectorXd& v, Eigen::Index nv) {
+  EdgeQuads q;
+  q.role_start.assign(static_cast<size_t>(nv) + 1, 0);
+  for (Eigen::Index e = 0; e < topo.num_edges(); ++e) {
+    if (!topo.edge_is_interior[e]) continue;
+    q.quad.push_back({topo.edges(e, 0), topo.edges(e, 1), opposite_vertex(F, topo, topo.edge_faces(e, 0), e),
+                      opposite_vertex(F, topo, topo.edge_faces(e, 1), e)});
+    q.quad_v.push_back(v(e));
+  }
+  for (const auto& h : q.quad)
+    for (int r = 0; r < 4; ++r) ++q.role_start[static_cast<size_t>(h[r]) + 1];
+  for (size_t i = 0; i < static_cast<size_t>(nv); ++i) q.role_start[i + 1] += q.role_start[i];
+  q.roles.resize(4 * q.quad.size());
+  std::vector<int> fill(q.role_start.begin(), q.role_start.end() - 1);
+  for (size_t h = 0; h < q.quad.size(); ++h)
+    for (int r = 0; r < 4; ++r) q.roles[static_cast<size_t>(fill[static_cast<size_t>(q.quad[h][r])]++)] = static_cast<int>(4 * h + r);
+  return q;
+}
+
+// eq. 27's matrix ω₁KᵀK + ω₂HᵀH + diag(d3), with
+//  K (3T×P): row 3i+k gives corner k of face i minus the face's mean (the centring matrix
+//    M = I − 11ᵀ/3, so KᵀK adds M = 2/3 on the diagonal, −1/3 between corners, per face);
+//  H: row per interior edge e = (i1,i2) with opposite vertices i3, i4: v_e (x1 + x2 − x3 − x4).
+// Built row by row from the vertex's corners and edge roles (no triplets, no products).
+SparseMatrix v_step_matrix(const Eigen::MatrixXi& F, const VertexCorners& vc, const EdgeQuads& eq,
+                           const Eigen::VectorXd& d3, const VertexUpdateOptions& o) {
+  const Eigen::Index nv = d3.size();
+  return detail::symmetric_from_rows(
+      nv,
+      [&](Eigen::Index i) {
+        const size_t u = static_cast<size_t>(i);
+        return 1 + 3 * (vc.start[u + 1] - vc.start[u]) +
+               (o.omega2 > 0 ? 4 * (eq.role_start[u + 1] - eq.role_start[u]) : 0);
+      },
+      [&](Eigen::Index i, int* col, double* val) {
+        const size_t u = static_cast<size_t>(i);
+        int n = 0;
+        // A tiny floor keeps vertices with ω₃ multiplier 0 and no face (isolated) well-posed.
+        col[n] = static_cast<int>(i);
+        val[n++] = std::max(d3(i), 1e-10);
+        for (int c = vc.start[u]; c < vc.start[u + 1]; ++c) {
+          const Eigen::Index f = vc.corners[static_cast<size_t>(c)] / 3;
+          const int a = vc.corners[static_cast<size_t>(c)] % 3;
+          for (int b = 0; b < 3; ++b) {
+            col[n] = F(f, b);
+            val[n++] = o.omega1 * ((a == b ? 1.0 : 0.0) - 1.0 / 3.0);
+          }
+        }
+        if (o.omega2 > 0)
+          for (int r = eq.role_start[u]; r < eq.role_start[u + 1]; ++r) {
+            const size_t h = static_cast<size_t>(eq.roles[static_cast<size_t>(r)]) / 4;
+            const int ri = eq.roles[static_cast<size_t>(r)] % 4;
+            const double ve = eq.quad_v[h], si = ri < 2 ? 1.0 : -1.0;
+            for (int t = 0; t < 4; ++t) {
+              col[n] = eq.quad[h][t];
+              val[n++] = o.omega2 * ve * ve * si * (t < 2 ? 1.0 : -1.0);
+            }
+          }
+        return n;
+      });
+}
+
+// P-step (eq. 25), per face: P (3#F by 3) gets M P̂ of each face; returns the number of faces
+// that took the degenerate fallback.
+Eigen::Index p_step(const Eigen::MatrixXi& F, const Rows& X, const Eigen::MatrixXd& N, Rows& P) {
+  const Eigen::Index nf = F.rows();
+  Eigen::Index fallbacks = 0;
+#pragma omp parallel for schedule(static) reduction(+ : fallbacks) if (nf >= detail::kParallelMin)
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    Eigen::Matrix3d C;  // rows: centred corners M V_f
+    for (int c = 0; c < 3; ++c) C.row(c) = X.row(F(f, c));
+    const Eigen::RowVector3d mean = C.colwise().mean();
+    C.rowwise() -= mean;
+    const Eigen::Vector3d nt = N.row(f).transpose();
+    const Eigen::Matrix3d proj = Eigen::Matrix3d::Identity() - nt * nt.transpose();
+    Eigen::Matrix3d Ph = C * proj;
+    const Eigen::Vector3d cur = (C.row(1) - C.row(0)).transpose().cross((C.row(2) - C.row(0)).transpose());
+    if (cur.dot(nt) < 0) {
+      // Closest degenerate triangle: project onto the top right-singular direction h of P̂
+      // (the top eigenvector of P̂ᵀP̂).
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(Ph.transpose() * Ph);
+      const Eigen::Vector3d h = es.eigenvectors().col(2);
+      Ph = Ph * (h * h.transpose());
+      ++fallbacks;
+    }
+    // Stored as M P̂ (each row minus the face's mean row), which is what ω₁KᵀP gathers.
+    const Eigen::RowVector3d ph_mean = (Ph.row(0) + Ph.row(1) + Ph.row(2)) / 3.0;
+    P.block<3, 3>(3 * f, 0) = Ph.rowwise() - ph_mean;
+  }
+  return fallbacks;
+}
+
+// V-step right-hand side (eq. 27): rhs = ω₁KᵀP + ω₃V⁰ (rhs0), row by row.
+void v_step_rhs(const Rows& rhs0, const Rows& P, const VertexCorners& vc, double omega1, Rows& rhs) {
+  detail::parallel_for(rhs0.rows(), [&](Eigen::Index i) {
+    Eigen::RowVector3d b = rhs0.row(i);
+    // ω₁KᵀP: each corner of the vertex adds its (centred) row of P.
+    for (int c = vc.start[static_cast<size_t>(i)]; c < vc.start[static_cast<size_t>(i) + 1]; ++c)
+      b += omega1 * P.row(vc.corners[static_cast<size_t>(c)]);
+    rhs.row(i) = b;
+  }, 2);  // about six corners per vertex
+}
+
+// The stopping test's RMS vertex move between X_prev and X.
+double rms_move(const Rows& X, const Rows& X_prev) {
+  const Eigen::Index nv = X.rows();
+  return std::sqrt(detail::deterministic_sums<1>(nv, [&](Eigen::Index i0, Eigen::Index i1, std::array<double, 1>& s) {
+                     for (Eigen::Index i = i0; i < i1; ++i) s[0] += (X.row(i) - X_prev.row(i)).squaredNorm();
+                   })[0] /
+                   double(nv));
+}
+
 }  // namespace
 
 VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
-                                   const Eigen::VectorXd& v_in, const VertexUpdateOptions& o,
+                                   const Eigen::VectorXd& v, const VertexUpdateOptions& o,
                                    const VertexUpdateWeights& weights, const ProgressCallback& progress) {
+  o.validate();  // the options before the mesh
+  return update_vertices(PreparedMesh(V, F, "vertex update"), N, v, o, weights, progress);
+}
+
+VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::MatrixXd& N, const Eigen::VectorXd& v_in,
+                                   const VertexUpdateOptions& o, const VertexUpdateWeights& weights,
+                                   const ProgressCallback& progress) {
   o.validate();
-  validate_mesh(V, F, "vertex update");
-  const Eigen::Index nv = V.rows(), nf = F.rows();
+  const Eigen::MatrixXi& F = mesh.faces();
+  const Eigen::Index nv = mesh.num_vertices(), nf = mesh.num_faces();
   if (N.rows() != nf || N.cols() != 3) throw InvalidInput("vertex update: target normals must be #F by 3");
-  const Topology topo = build_topology(F, nv);
+  const Topology& topo = mesh.topology();
   const Eigen::Index ne = topo.num_edges();
   Eigen::VectorXd v = v_in.size() ? v_in : Eigen::VectorXd::Ones(ne);
   if (v.size() != ne) throw InvalidInput("vertex update: edge field v must have one value per edge");
@@ -53,81 +198,16 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
   }
   VertexUpdateResult res;
   if (nf == 0) {
-    res.V = V;
+    res.V = mesh.positions();  // not normalised without faces: the input
     res.converged = true;
     return res;
   }
-  const detail::Normalization norm = detail::normalization_for(V, F, edge_lengths(V, topo).mean());
-  const Eigen::MatrixXd V0 = norm.apply(V);
+  const Eigen::MatrixXd& V0 = mesh.positions();
 
-  // eq. 27: (ω₁KᵀK + ω₂HᵀH + ω₃I) V = ω₁KᵀP + ω₃V⁰, with
-  //  K (3T×P): row 3i+k gives corner k of face i minus the face's mean (the centring matrix
-  //    M = I − 11ᵀ/3, so KᵀK adds M = 2/3 on the diagonal, −1/3 between corners, per face);
-  //  H: row per interior edge e = (i1,i2) with opposite vertices i3, i4: v_e (x1 + x2 − x3 − x4).
-  // Built row by row from the vertex's corners and edge roles (no triplets, no products).
+  // Assembly of eq. 27: (ω₁KᵀK + ω₂HᵀH + ω₃I) V = ω₁KᵀP + ω₃V⁰.
   const Eigen::VectorXd d3 = o.omega3 * w3;
-  // Corners of each vertex: (f, k) as 3f + k.
-  std::vector<int> corner_start(static_cast<size_t>(nv) + 1, 0), corners(static_cast<size_t>(3 * nf));
-  for (Eigen::Index f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) ++corner_start[static_cast<size_t>(F(f, k)) + 1];
-  for (size_t i = 0; i < static_cast<size_t>(nv); ++i) corner_start[i + 1] += corner_start[i];
-  {
-    std::vector<int> fill(corner_start.begin(), corner_start.end() - 1);
-    for (Eigen::Index f = 0; f < nf; ++f)
-      for (int k = 0; k < 3; ++k) corners[static_cast<size_t>(fill[static_cast<size_t>(F(f, k))]++)] = static_cast<int>(3 * f + k);
-  }
-  // The four vertices (+,+,−,−) of each interior edge's H row, and each vertex's roles in them.
-  std::vector<std::array<int, 4>> quad;
-  std::vector<double> quad_v;
-  std::vector<int> role_start(static_cast<size_t>(nv) + 1, 0), roles;
-  if (o.omega2 > 0) {
-    for (Eigen::Index e = 0; e < ne; ++e) {
-      if (!topo.edge_is_interior[e]) continue;
-      quad.push_back({topo.edges(e, 0), topo.edges(e, 1), opposite_vertex(F, topo, topo.edge_faces(e, 0), e),
-                      opposite_vertex(F, topo, topo.edge_faces(e, 1), e)});
-      quad_v.push_back(v(e));
-    }
-    for (const auto& q : quad)
-      for (int r = 0; r < 4; ++r) ++role_start[static_cast<size_t>(q[r]) + 1];
-    for (size_t i = 0; i < static_cast<size_t>(nv); ++i) role_start[i + 1] += role_start[i];
-    roles.resize(4 * quad.size());
-    std::vector<int> fill(role_start.begin(), role_start.end() - 1);
-    for (size_t h = 0; h < quad.size(); ++h)
-      for (int r = 0; r < 4; ++r) roles[static_cast<size_t>(fill[static_cast<size_t>(quad[h][r])]++)] = static_cast<int>(4 * h + r);
-  }
-  SparseMatrix A = detail::symmetric_from_rows(
-      nv,
-      [&](Eigen::Index i) {
-        const size_t u = static_cast<size_t>(i);
-        return 1 + 3 * (corner_start[u + 1] - corner_start[u]) +
-               (o.omega2 > 0 ? 4 * (role_start[u + 1] - role_start[u]) : 0);
-      },
-      [&](Eigen::Index i, int* col, double* val) {
-        const size_t u = static_cast<size_t>(i);
-        int n = 0;
-        // A tiny floor keeps vertices with ω₃ multiplier 0 and no face (isolated) well-posed.
-        col[n] = static_cast<int>(i);
-        val[n++] = std::max(d3(i), 1e-10);
-        for (int c = corner_start[u]; c < corner_start[u + 1]; ++c) {
-          const Eigen::Index f = corners[static_cast<size_t>(c)] / 3;
-          const int a = corners[static_cast<size_t>(c)] % 3;
-          for (int b = 0; b < 3; ++b) {
-            col[n] = F(f, b);
-            val[n++] = o.omega1 * ((a == b ? 1.0 : 0.0) - 1.0 / 3.0);
-          }
-        }
-        if (o.omega2 > 0)
-          for (int r = role_start[u]; r < role_start[u + 1]; ++r) {
-            const size_t h = static_cast<size_t>(roles[static_cast<size_t>(r)]) / 4;
-            const int ri = roles[static_cast<size_t>(r)] % 4;
-            const double ve = quad_v[h], si = ri < 2 ? 1.0 : -1.0;
-            for (int t = 0; t < 4; ++t) {
-              col[n] = quad[h][t];
-              val[n++] = o.omega2 * ve * ve * si * (t < 2 ? 1.0 : -1.0);
-            }
-          }
-        return n;
-      });
+  const VertexCorners vc = vertex_corners(F, nv);
+  const EdgeQuads eq = o.omega2 > 0 ? edge_quads(F, topo, v, nv) : EdgeQuads{};
   // Auto: the factorisation below kCgMinVertices vertices (cheap there, and exact), conjugate
   // gradients above (linear cost; κ is bounded by about (6ω₁ + 16ω₂ + ω₃)/ω₃), unless
   // per-vertex weights lower ω₃ somewhere (inpainting: new vertices are free), which makes
@@ -135,45 +215,13 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
   constexpr Eigen::Index kCgMinVertices = 40000;
   const bool use_cg = o.solver == LinearSolver::CG ||
                       (o.solver == LinearSolver::Auto && nv >= kCgMinVertices && w3.minCoeff() >= 0.5);
-  const detail::ConstantSystem v_step(A, use_cg, "vertex update");
-  A = SparseMatrix();
-  using Rows = detail::RowMatrixX3;
+  const detail::ConstantSystem v_step(v_step_matrix(F, vc, eq, d3, o), use_cg, "vertex update");
   const Rows rhs0 = detail::to_rows(d3.asDiagonal() * V0);
 
   Rows X = detail::to_rows(V0), X_prev(nv, 3), X_old(nv, 3), rhs(nv, 3), P(3 * nf, 3);
   for (int k = 0; k < o.max_iterations; ++k) {
-    // P-step (eq. 25), per face.
-    Eigen::Index fallbacks = 0;
-#pragma omp parallel for schedule(static) reduction(+ : fallbacks) if (nf >= detail::kParallelMin)
-    for (Eigen::Index f = 0; f < nf; ++f) {
-      Eigen::Matrix3d C;  // rows: centred corners M V_f
-      for (int c = 0; c < 3; ++c) C.row(c) = X.row(F(f, c));
-      const Eigen::RowVector3d mean = C.colwise().mean();
-      C.rowwise() -= mean;
-      const Eigen::Vector3d nt = N.row(f).transpose();
-      const Eigen::Matrix3d proj = Eigen::Matrix3d::Identity() - nt * nt.transpose();
-      Eigen::Matrix3d Ph = C * proj;
-      const Eigen::Vector3d cur = (C.row(1) - C.row(0)).transpose().cross((C.row(2) - C.row(0)).transpose());
-      if (cur.dot(nt) < 0) {
-        // Closest degenerate triangle: project onto the top right-singular direction h of P̂
-        // (the top eigenvector of P̂ᵀP̂).
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(Ph.transpose() * Ph);
-        const Eigen::Vector3d h = es.eigenvectors().col(2);
-        Ph = Ph * (h * h.transpose());
-        ++fallbacks;
-      }
-      // Stored as M P̂ (each row minus the face's mean row), which is what ω₁KᵀP gathers.
-      const Eigen::RowVector3d ph_mean = (Ph.row(0) + Ph.row(1) + Ph.row(2)) / 3.0;
-      P.block<3, 3>(3 * f, 0) = Ph.rowwise() - ph_mean;
-    }
-    // V-step (eq. 27): rhs = ω₁KᵀP + ω₃V⁰, row by row.
-    detail::parallel_for(nv, [&](Eigen::Index i) {
-      Eigen::RowVector3d b = rhs0.row(i);
-      // ω₁KᵀP: each corner of the vertex adds its (centred) row of P.
-      for (int c = corner_start[static_cast<size_t>(i)]; c < corner_start[static_cast<size_t>(i) + 1]; ++c)
-        b += o.omega1 * P.row(corners[static_cast<size_t>(c)]);
-      rhs.row(i) = b;
-    }, 2);  // about six corners per vertex
+    const Eigen::Index fallbacks = p_step(F, X, N, P);
+    v_step_rhs(rhs0, P, vc, o.omega1, rhs);
     X_prev = X;
     if (v_step.iterative() && k >= 1) {
       // Warm start on the secant X_k + (X_k − X_{k−1}): the vertices move smoothly from one
@@ -183,11 +231,7 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
     }
     const int sweeps = v_step.solve(rhs, X, o.solver_tolerance);
     if (sweeps >= 0) res.solver_iterations.push_back(sweeps);
-    const double change = std::sqrt(detail::deterministic_sums<1>(nv, [&](Eigen::Index i0, Eigen::Index i1,
-                                                                           std::array<double, 1>& s) {
-                                       for (Eigen::Index i = i0; i < i1; ++i) s[0] += (X.row(i) - X_prev.row(i)).squaredNorm();
-                                     })[0] /
-                                     double(nv));
+    const double change = rms_move(X, X_prev);
     if (v_step.iterative()) X_old = X_prev;
     res.change_history.push_back(change);
     res.iterations = k + 1;
@@ -201,7 +245,7 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
       break;
     }
   }
-  res.V = norm.undo(Eigen::MatrixXd(X));
+  res.V = mesh.to_input_units(Eigen::MatrixXd(X));
   return res;
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "msmesh/prepared_mesh.h"
 #include "msmesh/progress.h"
 #include "msmesh/solver.h"
 
@@ -47,12 +48,11 @@ struct NormalFilterOptions {
 /// Optional spatially varying weights (for inpainting): empty vectors mean "all ones".
 struct NormalFilterWeights {
   Eigen::VectorXd face_alpha;  ///< #F multipliers of α (fidelity per face)
-  Eigen::VectorXd edge_beta;   ///< #E multipliers of β in the ‖v − 1‖² term per edge
+  Eigen::VectorXd edge_beta;   ///< #E multipliers of β in the ‖v − 1‖² term, in the order of Topology::edges
 };
 
-struct NormalFilterResult {
-  Eigen::MatrixXd normals;  ///< #F by 3 filtered unit face normals
-  Eigen::VectorXd v;        ///< #E edge field (≈0 on features, ≈1 elsewhere), edges of build_topology
+/// How Algorithm 1 ran: iterations, convergence and histories (no per-element arrays).
+struct NormalFilterStats {
   int iterations = 0;
   bool converged = false;  ///< stopped by the tolerance rather than max_iterations
   std::vector<double> residual_history;  ///< ‖p − ∇N‖_V per iteration (mean-edge units)
@@ -62,15 +62,26 @@ struct NormalFilterResult {
   std::vector<int> n_solver_iterations;  ///< CG iterations of each N-step (solver CG)
 };
 
-/// Filters the face normals of (V, F) (#V by 3, #F by 3). `normals0` (#F by 3) are the
-/// input normals N⁰; when empty, the face normals of V are used. Throws InvalidInput for bad
-/// options or mesh, SolverError when a factorisation fails, Cancelled when `progress`
+struct NormalFilterResult : NormalFilterStats {
+  Eigen::MatrixXd normals;  ///< #F by 3 filtered unit face normals
+  Eigen::VectorXd v;        ///< #E edge field (≈0 on features, ≈1 elsewhere): v[e] belongs to edges.row(e)
+  Eigen::MatrixXi edges;    ///< #E by 2 vertex indices of the edges v refers to (Topology::edges)
+};
+
+/// Filters the face normals of the prepared mesh. `normals0` (#F by 3) are the input normals
+/// N⁰; when empty, the face normals of the mesh are used. Throws InvalidInput for bad options
+/// or a mesh without faces, SolverError when a factorisation fails, Cancelled when `progress`
 /// returns false.
+NormalFilterResult filter_normals(const PreparedMesh& mesh, const NormalFilterOptions& options = {},
+                                  const NormalFilterWeights& weights = {}, const ProgressCallback& progress = {},
+                                  const Eigen::MatrixXd& normals0 = {});
+
+/// The same for (V, F) (#V by 3, #F by 3): prepares the mesh (prepared_mesh.h) and forwards.
 NormalFilterResult filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
                                   const NormalFilterOptions& options = {}, const NormalFilterWeights& weights = {},
                                   const ProgressCallback& progress = {}, const Eigen::MatrixXd& normals0 = {});
 
-/// Energy (15) of normals N (#F by 3) and edge field v (#E) for the mesh (V, F), in the
+/// Energy (15) of normals N (#F by 3) and edge field v (#E, v[e] on Topology::edges.row(e)) for the mesh (V, F), in the
 /// same normalised units as filter_normals (for tests and reports).
 double nmstv_energy(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
                     const Eigen::VectorXd& v, const Eigen::MatrixXd& normals0, const NormalFilterOptions& options);

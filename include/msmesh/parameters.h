@@ -61,6 +61,10 @@ struct ParameterInfo {
 /// parameter's name; the CLI passes "--name", Python "name=".
 void check_parameter(const ParameterInfo& p, double value, const std::string& as_typed = "");
 
+/// The same check and message ("<group>: <name> = <value> is out of range; valid: <range>") for
+/// a value of an options struct without a parameter table (multicut, noise, repair, render).
+void check_parameter(const std::string& group, const std::string& name, double value, const ParameterRange& range);
+
 /// Parses a value typed by a user: the whole text must be one finite number ("" and "1x"
 /// are refused; Boolean also takes true/false/yes/no/on/off). Throws InvalidInput naming
 /// `as_typed` and the text; the value is then checked with check_parameter.

@@ -52,7 +52,7 @@ struct SegmentResult {
   double objective = 0;
   int multicut_count = 0;  ///< segments the multicut found, before the small-segment merge
   Eigen::MatrixXd normals;         ///< #F by 3 regularised normals from Algorithm 1
-  Eigen::VectorXd v;               ///< #E edge field from Algorithm 1 (edges of build_topology)
+  Eigen::VectorXd v;               ///< #E edge field from Algorithm 1: v[e] belongs to Topology::edges.row(e) of F
   Eigen::VectorXd v_normalized;    ///< #E, v rescaled to [0, 1] (min → 0, max → 1)
   Eigen::VectorXd split_probability;  ///< #E p_e; 0 for boundary and non-manifold edges
   NormalFilterResult normal_report;   ///< iterations and histories of Algorithm 1
@@ -67,7 +67,8 @@ SegmentResult segment(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
                       const ProgressCallback& progress = {});
 
 /// The steps of segment() after Algorithm 1, for given regularised normals N (#F by 3) and
-/// edge field v (#E, edges of build_topology(F)). Fills every field of the result except
+/// edge field v (#E: v[e] belongs to Topology::edges.row(e) of F, the NormalFilterResult::edges
+/// of filter_normals). Fills every field of the result except
 /// normal_report.
 SegmentResult segment_with_field(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
                                  const Eigen::VectorXd& v, const SegmentOptions& options = {},
@@ -77,7 +78,7 @@ SegmentResult segment_with_field(const Eigen::MatrixXd& V, const Eigen::MatrixXi
 Eigen::VectorXd normalize_edge_field(const Eigen::VectorXd& v);
 
 /// Feature lines: the edges whose normalised field (normalize_edge_field(v) < threshold, v
-/// #E over the edges of build_topology(F)) form the feature graph; its edges are chained
+/// #E with v[e] on Topology::edges.row(e) of F) form the feature graph; its edges are chained
 /// through vertices of degree 2 and split at junctions and end points (degree ≠ 2). Each
 /// polyline is a list of vertex indices (rows of V); a closed loop repeats its first vertex
 /// at the end. Polylines with fewer than `min_edges` edges are dropped (default 1: keep all).

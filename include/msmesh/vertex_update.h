@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "msmesh/prepared_mesh.h"
 #include "msmesh/progress.h"
 #include "msmesh/solver.h"
 
@@ -33,8 +34,8 @@ struct VertexUpdateWeights {
   Eigen::VectorXd vertex_omega3;  ///< #V multipliers (empty: all ones)
 };
 
-struct VertexUpdateResult {
-  Eigen::MatrixXd V;  ///< #V by 3 new positions
+/// How Algorithm 2 ran: iterations, convergence and histories (no per-element arrays).
+struct VertexUpdateStats {
   int iterations = 0;
   bool converged = false;
   std::vector<double> change_history;  ///< RMS vertex move per iteration (mean-edge units)
@@ -42,9 +43,19 @@ struct VertexUpdateResult {
   Eigen::Index fallback_projections = 0;  ///< faces that used the degenerate projection (last iteration)
 };
 
-/// Updates the vertices of (V, F) towards the target unit normals N (#F by 3), with the edge
-/// field v (#E, edges of build_topology(F); empty: all ones). Invariant to scale, rotation
-/// and translation of the input (normalised inside).
+struct VertexUpdateResult : VertexUpdateStats {
+  Eigen::MatrixXd V;  ///< #V by 3 new positions
+};
+
+/// Updates the vertices of the prepared mesh towards the target unit normals N (#F by 3), with
+/// the edge field v (#E: v[e] belongs to mesh.edges().row(e); empty: all ones). The result is
+/// in the input's units: invariant to scale, rotation and translation of the input.
+VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::MatrixXd& N, const Eigen::VectorXd& v = {},
+                                   const VertexUpdateOptions& options = {}, const VertexUpdateWeights& weights = {},
+                                   const ProgressCallback& progress = {});
+
+/// The same for (V, F) (#V by 3, #F by 3), v[e] on build_topology(F).edges.row(e): prepares the
+/// mesh (prepared_mesh.h) and forwards.
 VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
                                    const Eigen::VectorXd& v = {}, const VertexUpdateOptions& options = {},
                                    const VertexUpdateWeights& weights = {}, const ProgressCallback& progress = {});

@@ -29,7 +29,7 @@ py::dict denoise_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, con
     d["vertex_iterations"] = options.bilateral.vertex_iterations;
   } else {
     d["v"] = to_numpy(r.v);
-    d["edges"] = to_numpy(build_topology(F, V.rows()).edges);
+    d["edges"] = to_numpy(r.edges);
   }
   d["seconds_normals"] = r.seconds_normals;
   d["seconds_vertices"] = r.seconds_vertices;
@@ -47,7 +47,7 @@ py::dict filter_normals_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi&
   d["seconds_normals"] = seconds_since(t0);
   d["normals"] = to_numpy(r.normals);
   d["v"] = to_numpy(r.v);
-  d["edges"] = to_numpy(build_topology(F, V.rows()).edges);
+  d["edges"] = to_numpy(r.edges);
   return d;
 }
 

@@ -103,8 +103,8 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 /// The iteration counts and histories of Algorithm 1 / Algorithm 2 as dict entries.
-py::dict normal_report(const NormalFilterResult& r);
-void add_vertex_report(py::dict& d, const VertexUpdateResult& r);
+py::dict normal_report(const NormalFilterStats& r);
+void add_vertex_report(py::dict& d, const VertexUpdateStats& r);
 
 // The bindings of each area (bind_*.cpp), called once by PYBIND11_MODULE (module.cpp).
 void bind_denoise(py::module_& m);

@@ -65,7 +65,7 @@ void register_exceptions(py::module_& m) {
 std::atomic<int> g_threads{0};
 
 
-py::dict normal_report(const NormalFilterResult& r) {
+py::dict normal_report(const NormalFilterStats& r) {
   py::dict d;
   d["normal_iterations"] = r.iterations;
   d["normal_converged"] = r.converged;
@@ -77,7 +77,7 @@ py::dict normal_report(const NormalFilterResult& r) {
   return d;
 }
 
-void add_vertex_report(py::dict& d, const VertexUpdateResult& r) {
+void add_vertex_report(py::dict& d, const VertexUpdateStats& r) {
   d["vertex_iterations"] = r.iterations;
   d["vertex_converged"] = r.converged;
   d["vertex_change_history"] = r.change_history;
