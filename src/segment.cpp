@@ -96,6 +96,7 @@ SegmentResult segment_checked(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F
   SegmentResult r;
   r.normals = N;
   r.v = v;
+  r.edges = topo.edges;
   r.v_normalized = normalize_edge_field(v);
 
   // Face adjacency graph over interior manifold edges, with the §6.3 split probabilities.
@@ -167,9 +168,9 @@ SegmentResult segment(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
                       const ProgressCallback& progress) {
   o.validate();
   const PreparedMesh mesh(V, F, "segmentation");  // checked and connected once for both steps
-  NormalFilterResult nf = filter_normals(mesh, o.normals, {}, progress);
+  const NormalFilterResult nf = filter_normals(mesh, o.normals, {}, progress);
   SegmentResult r = segment_checked(V, F, mesh.topology(), nf.normals, nf.v, o, progress);
-  r.normal_report = std::move(nf);
+  r.normal_report = nf;  // the statistics only: normals and v are in r already
   return r;
 }
 

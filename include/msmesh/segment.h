@@ -55,7 +55,8 @@ struct SegmentResult {
   Eigen::VectorXd v;               ///< #E edge field from Algorithm 1: v[e] belongs to Topology::edges.row(e) of F
   Eigen::VectorXd v_normalized;    ///< #E, v rescaled to [0, 1] (min → 0, max → 1)
   Eigen::VectorXd split_probability;  ///< #E p_e; 0 for boundary and non-manifold edges
-  NormalFilterResult normal_report;   ///< iterations and histories of Algorithm 1
+  Eigen::MatrixXi edges;              ///< #E by 2: v[e], v_normalized[e], split_probability[e] belong to edges.row(e)
+  NormalFilterStats normal_report;    ///< iterations and histories of Algorithm 1
   MulticutResult multicut_report;     ///< statistics of the multicut solve (its own labels)
 };
 
@@ -68,8 +69,7 @@ SegmentResult segment(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
 
 /// The steps of segment() after Algorithm 1, for given regularised normals N (#F by 3) and
 /// edge field v (#E: v[e] belongs to Topology::edges.row(e) of F, the NormalFilterResult::edges
-/// of filter_normals). Fills every field of the result except
-/// normal_report.
+/// of filter_normals). Fills every field of the result except normal_report.
 SegmentResult segment_with_field(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
                                  const Eigen::VectorXd& v, const SegmentOptions& options = {},
                                  const ProgressCallback& progress = {});

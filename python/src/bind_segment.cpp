@@ -26,7 +26,7 @@ py::dict segment_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, con
   d["v"] = to_numpy(r.v);
   d["v_normalized"] = to_numpy(r.v_normalized);
   d["split_probability"] = to_numpy(r.split_probability);
-  d["edges"] = to_numpy(r.normal_report.edges);
+  d["edges"] = to_numpy(r.edges);
   const MulticutResult& mc = r.multicut_report;
   d["multicut_objective_greedy"] = mc.objective_greedy;
   d["multicut_contractions"] = mc.contractions;
