@@ -183,6 +183,7 @@ int main(int argc, char** argv) {
   msmesh::install_output_signal_handlers();  // temporary files removed on SIGINT/SIGTERM/...; SIGXFSZ an error
   int status = run(argc, argv);
   const std::string stdout_error = finish_standard_output();
-  if (!stdout_error.empty() && status == 0) status = report_error("cannot write to standard output: " + stdout_error, kFailureStatus);
+  if (!stdout_error.empty() && status == 0)
+    status = report_error("cannot write to standard output: " + stdout_error, kFailureStatus);
   return status;
 }

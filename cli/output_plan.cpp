@@ -27,7 +27,8 @@ std::string in_quotes(const std::string& s) { return "'" + s + "'"; }
 
 std::string lower_extension(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext;
 }
 
@@ -91,7 +92,8 @@ void check_name(const std::string& path, OutputKind kind, const std::string& opt
   const std::string ext = lower_extension(path);
   if (path == kStandardOutput) {
     if (kind == OutputKind::Png || kind == OutputKind::Text) return;
-    throw UsageError(option + " -: a mesh cannot be written to standard output (its format comes from the file "
+    throw UsageError(option +
+                     " -: a mesh cannot be written to standard output (its format comes from the file "
                      "extension); name a file such as out.ply");
   }
   switch (kind) {
@@ -199,9 +201,7 @@ OutputPlan& OutputPlan::in_place(bool allowed) {
   return *this;
 }
 
-void OutputPlan::begin() {
-  // Usage first: names, then files that are one.
-  for (const File& o : outputs_) check_name(o.path, o.kind, o.option);
+void OutputPlan::check_distinct() const {
   std::vector<std::optional<Identity>> in_ids, out_ids;
   for (const File& i : inputs_) in_ids.push_back(existing_identity(i.path));
   for (const File& o : outputs_) out_ids.push_back(output_identity(o.path));
@@ -220,8 +220,8 @@ void OutputPlan::begin() {
       if (!in_ids[k] || !(*in_ids[k] == *out_ids[j])) continue;
       const bool may = k == 0 && o.option == "-o";
       if (may && in_place_) continue;
-      throw UsageError("refusing to overwrite " + input_name(inputs_[k]) + " with " + o.option + " " + in_quotes(o.path) +
-                       (may ? " (pass --in-place to allow it)" : ""));
+      throw UsageError("refusing to overwrite " + input_name(inputs_[k]) + " with " + o.option + " " +
+                       in_quotes(o.path) + (may ? " (pass --in-place to allow it)" : ""));
     }
   }
   for (const File& parts : parts_) {
@@ -232,9 +232,9 @@ void OutputPlan::begin() {
       throw UsageError(parts.option + " " + in_quotes(parts.path) + " writes part_NNN.obj files there, and " + what +
                        " is one of them; choose another folder");
     };
+    const std::optional<Identity> as_output = output_identity(parts.path);
     for (size_t j = 0; j < outputs_.size(); ++j) {
       if (outputs_[j].path == kStandardOutput) continue;
-      const std::optional<Identity> as_output = output_identity(parts.path);
       if (as_output && out_ids[j] && *as_output == *out_ids[j])
         throw UsageError("two outputs are the same file: " + outputs_[j].option + " " + in_quotes(outputs_[j].path) +
                          " and " + parts.option + " " + in_quotes(parts.path));
@@ -257,6 +257,12 @@ void OutputPlan::begin() {
           clash(outputs_[j].option + " " + in_quotes(outputs_[j].path) + " (as " + entry.path().string() + ")");
     }
   }
+}
+
+void OutputPlan::begin() {
+  // Usage first: names, then files that are one.
+  for (const File& o : outputs_) check_name(o.path, o.kind, o.option);
+  check_distinct();
   // Then the file system: every output can be written.
   for (const File& o : outputs_) check_writable(o.path);
   for (const File& parts : parts_) check_parts_folder(parts.path);

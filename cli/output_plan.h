@@ -58,6 +58,9 @@ class OutputPlan {
     std::string path, option;
     OutputKind kind = OutputKind::Text;
   };
+  /// No output is an input (but -o the main input with --in-place) or another output.
+  void check_distinct() const;
+
   std::vector<File> inputs_, outputs_;
   std::vector<File> parts_;
   bool in_place_ = false;

@@ -116,8 +116,9 @@ TEST(OutputsNeverOverwriteInputs, OtherSpellingsLinksAndHardLinksOfTheInputAreRe
   fs::create_hard_link(s.in, s.d.path() / "hard.obj");
   fs::create_symlink(s.in, s.d.path() / "picture.png");  // a .png name that is the mesh
   const std::string in = q(s.in);
-  for (const std::string& spelling : std::vector<std::string>{s.d.file("./in.obj"), s.d.file("sub/../in.obj"), s.d.file("link.obj"),
-                                      s.d.file("sub/rel.obj"), s.d.file("hard.obj")}) {
+  for (const std::string& spelling :
+       std::vector<std::string>{s.d.file("./in.obj"), s.d.file("sub/../in.obj"), s.d.file("link.obj"),
+                                s.d.file("sub/rel.obj"), s.d.file("hard.obj")}) {
     expect_refused("noise " + in + " -o " + q(spelling), 2, "refusing to overwrite the input file", s.d.path());
     expect_refused("repair " + in + " -o " + q(spelling), 2, "pass --in-place to allow it", s.d.path());
     expect_refused("denoise " + in + " -o " + q(s.d.file("o.obj")) + " --save-field " + q(spelling), 2,
@@ -171,8 +172,8 @@ TEST(OutputsNeverOverwriteInputs, TwoOutputsOfOneRunMustBeDifferentFiles) {
        })
     expect_refused(args, 2, "two outputs are the same file", s.d.path());
   // A character device such as /dev/null may take several outputs.
-  const auto run = run_cli("denoise " + in + " -o " + q(s.d.file("o.obj")) +
-                           " --save-field /dev/null --report /dev/null -q");
+  const auto run =
+      run_cli("denoise " + in + " -o " + q(s.d.file("o.obj")) + " --save-field /dev/null --report /dev/null -q");
   EXPECT_EQ(run.status, 0) << run.out;
 }
 
@@ -189,8 +190,8 @@ TEST(OutputsNeverOverwriteInputs, PartFilesAreNeitherInputsNorOtherOutputs) {
   expect_refused("segment " + q(s.in) + " -o " + q(s.d.file("o.ply")) + " --parts " + q(parts.string()), 2,
                  "the input file '" + s.in + "' (as ", s.d.path());
   fs::remove(parts / "part_002.obj");
-  expect_refused("segment " + q(s.in) + " -o " + q(s.d.file("o.ply")) + " --parts " + q(parts.string()) +
-                     " --labels " + q((parts / "part_001.obj").string()),
+  expect_refused("segment " + q(s.in) + " -o " + q(s.d.file("o.ply")) + " --parts " + q(parts.string()) + " --labels " +
+                     q((parts / "part_001.obj").string()),
                  2, "--labels", s.d.path());
   expect_refused("segment " + q(s.in) + " -o " + q(s.d.file("o.ply")) + " --parts " + q(s.d.file("o.ply")), 2,
                  "two outputs are the same file", s.d.path());
@@ -203,9 +204,10 @@ TEST(SpecialOutputs, DeviceIsWrittenToNeverReplaced) {
   Scene s;
   struct stat before, after;
   ASSERT_EQ(::stat("/dev/null", &before), 0);
-  for (const std::string& args : std::vector<std::string>{"render " + q(s.in) + " -o /dev/null -q",
-                                  "denoise " + q(s.in) + " -o " + q(s.d.file("o.obj")) + " --report /dev/null -q",
-                                  "segment " + q(s.in) + " -o " + q(s.d.file("o.ply")) + " --labels /dev/null -q"}) {
+  for (const std::string& args :
+       std::vector<std::string>{"render " + q(s.in) + " -o /dev/null -q",
+                                "denoise " + q(s.in) + " -o " + q(s.d.file("o.obj")) + " --report /dev/null -q",
+                                "segment " + q(s.in) + " -o " + q(s.d.file("o.ply")) + " --labels /dev/null -q"}) {
     const auto run = run_cli(args);
     EXPECT_EQ(run.status, 0) << args << "\n" << run.out;
   }
@@ -221,8 +223,9 @@ TEST(SpecialOutputs, FifoIsWrittenToNeverReplaced) {
   Scene s;
   const std::string fifo = s.d.file("pipe");
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  for (const std::string& args : std::vector<std::string>{"render " + q(s.in) + " -o " + q(fifo) + " -q",
-                                  "segment " + q(s.in) + " -o " + q(s.d.file("o.ply")) + " --labels " + q(fifo) + " -q"}) {
+  for (const std::string& args : std::vector<std::string>{
+           "render " + q(s.in) + " -o " + q(fifo) + " -q",
+           "segment " + q(s.in) + " -o " + q(s.d.file("o.ply")) + " --labels " + q(fifo) + " -q"}) {
     std::string received;
     std::thread reader([&] { received = read_bytes(fifo); });  // opening blocks until msmesh writes
     const auto run = run_cli(args);
@@ -245,8 +248,8 @@ TEST(SpecialOutputs, FifoIsWrittenToNeverReplaced) {
 TEST(SpecialOutputs, DashIsStandardOutputForPicturesAndTextNotForMeshes) {
   Scene s;
   const std::string data = s.d.file("stdout.bin"), err = s.d.file("stderr.txt");
-  auto run = run_command("(" + std::string(MSMESH_CLI_PATH) + " render " + q(s.in) + " -o - 2>" + q(err) + ") > " +
-                         q(data));
+  auto run =
+      run_command("(" + std::string(MSMESH_CLI_PATH) + " render " + q(s.in) + " -o - 2>" + q(err) + ") > " + q(data));
   EXPECT_EQ(run.status, 0) << read_bytes(err);
   EXPECT_EQ(read_bytes(data).substr(0, 8), "\x89PNG\r\n\x1a\n");
   EXPECT_NE(read_bytes(err).find("rendered"), std::string::npos) << read_bytes(err);  // the summary: on stderr
@@ -259,8 +262,9 @@ TEST(SpecialOutputs, DashIsStandardOutputForPicturesAndTextNotForMeshes) {
   fs::remove(data);
   fs::remove(err);
   fs::remove(s.d.file("o.ply"));
-  for (const std::string& args : std::vector<std::string>{"denoise " + q(s.in) + " -o -", "features " + q(s.in) + " -o -",
-                                  "segment " + q(s.in) + " -o -", std::string("shape cube -o -")})
+  for (const std::string& args :
+       std::vector<std::string>{"denoise " + q(s.in) + " -o -", "features " + q(s.in) + " -o -",
+                                "segment " + q(s.in) + " -o -", std::string("shape cube -o -")})
     expect_refused(args, 2, "cannot be written to standard output", s.d.path());
 }
 
@@ -344,15 +348,15 @@ TEST(AllOrNothing, OutputNamesAndFoldersAreCheckedBeforeAnyWork) {
 TEST(AllOrNothing, FailedRunLeavesEveryExistingFileAsItWasAndNoNewFile) {
   Scene s;
   const std::string in = q(s.in);
-  expect_refused("denoise " + in + " -o " + q(s.prev) + " --method bilateral --save-field " + q(s.d.file("f.txt")),
-                 2, "--save-field needs --method nmstv or mstv", s.d.path());
+  expect_refused("denoise " + in + " -o " + q(s.prev) + " --method bilateral --save-field " + q(s.d.file("f.txt")), 2,
+                 "--save-field needs --method nmstv or mstv", s.d.path());
   expect_refused("denoise " + in + " -o " + q(s.prev) + " --truth " + q(s.d.file("missing.obj")), 1, "missing.obj",
                  s.d.path());
   expect_refused("render " + in + " -o " + q(s.d.file("p.png")) + " --color labels --labels " + q(s.prev), 1,
                  "prev.obj", s.d.path());
-  expect_refused("segment " + in + " -o " + q(s.d.file("o.ply")) + " --parts " + q(s.d.file("new/parts")) +
-                     " --labels /dev/full",
-                 1, "/dev/full: write failed: no space left on device", s.d.path());  // no parts folder left
+  expect_refused(
+      "segment " + in + " -o " + q(s.d.file("o.ply")) + " --parts " + q(s.d.file("new/parts")) + " --labels /dev/full",
+      1, "/dev/full: write failed: no space left on device", s.d.path());  // no parts folder left
 }
 
 TEST(AllOrNothing, FailureAfterSomeOutputsWereWrittenCommitsNone) {
@@ -363,8 +367,8 @@ TEST(AllOrNothing, FailureAfterSomeOutputsWereWrittenCommitsNone) {
                  "/dev/full: write failed", s.d.path());
   expect_refused("holes " + in + " -o " + q(s.prev) + " --map /dev/full", 1, "/dev/full: write failed", s.d.path());
   // A file-size limit the small mesh fits under and the HTML report (with its viewer) does not.
-  const std::string cmd = "bash -c 'ulimit -f 200; exec " + std::string(MSMESH_CLI_PATH) + " denoise " + s.in +
-                          " -o " + s.prev + " --report " + s.d.file("r.html") + " --normal-iterations 2'";
+  const std::string cmd = "bash -c 'ulimit -f 200; exec " + std::string(MSMESH_CLI_PATH) + " denoise " + s.in + " -o " +
+                          s.prev + " --report " + s.d.file("r.html") + " --normal-iterations 2'";
   const Snapshot before = snapshot(s.d.path());
   const auto run = run_command(cmd);
   EXPECT_EQ(run.status, 1) << run.out;
@@ -425,8 +429,8 @@ TEST(Signals, SignalWhileOutputsArePendingRemovesEveryTemporaryFile) {
     const std::string fifo = s.d.file("pipe");
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
     const Snapshot before = snapshot(s.d.path());
-    const pid_t pid = spawn_cli({"segment", s.in, "-o", s.d.file("o.ply"), "--labels", fifo, "--parts",
-                                 s.d.file("parts")});
+    const pid_t pid =
+        spawn_cli({"segment", s.in, "-o", s.d.file("o.ply"), "--labels", fifo, "--parts", s.d.file("parts")});
     ASSERT_GT(pid, 0);
     const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     while (!has_temporary_file(s.d.path()) && std::chrono::steady_clock::now() < end)
@@ -476,8 +480,8 @@ TEST(Signals, SignalDuringALargeWriteRemovesTheTemporaryFile) {
 TEST(Signals, FileSizeLimitIsAClearErrorAndLeavesNothing) {
   Scene s;
   for (const std::string& args : std::vector<std::string>{"shape sphere --resolution 60 -o " + s.d.file("sphere.ply"),
-                                  "noise " + s.in + " -o " + s.prev + " --sigma 0.1",
-                                  "render " + s.in + " -o " + s.d.file("p.png")}) {
+                                                          "noise " + s.in + " -o " + s.prev + " --sigma 0.1",
+                                                          "render " + s.in + " -o " + s.d.file("p.png")}) {
     const Snapshot before = snapshot(s.d.path());
     const auto run = run_command("bash -c 'ulimit -f 1; exec " + std::string(MSMESH_CLI_PATH) + " " + args + "'");
     EXPECT_EQ(run.status, 1) << args << "\n" << run.out;
@@ -509,12 +513,14 @@ TEST(StandardOutput, FullOrClosedStandardOutputFailsTheRun) {
   Scene s;
   const std::string M = MSMESH_CLI_PATH;
   for (const std::string& redirect : std::vector<std::string>{"> /dev/full", ">&-"}) {
-    for (const std::string& args : std::vector<std::string>{std::string("shape --list"), "info " + q(s.in), "params --preset cad", "--help",
-                                    "render " + q(s.in) + " -o -"}) {
+    for (const std::string& args :
+         std::vector<std::string>{std::string("shape --list"), "info " + q(s.in), "params --preset cad", "--help",
+                                  "render " + q(s.in) + " -o -"}) {
       const auto run = run_command("(" + M + " " + args + " " + redirect + ")");  // stderr still captured
       EXPECT_EQ(run.status, 1) << args << " " << redirect << "\n" << run.out;
       EXPECT_NE(run.out.find("msmesh: error: cannot write to standard output: "), std::string::npos)
-          << args << " " << redirect << "\n" << run.out;
+          << args << " " << redirect << "\n"
+          << run.out;
     }
   }
   // Nothing printed (-q): nothing lost, exit 0; and the summary never lands in an output file
