@@ -164,7 +164,7 @@ const Registrar reg("compare", 95, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("compare", "Render several meshes side by side into one PNG sheet (with error figures)");
   c->add_option("inputs", a->inputs, "Meshes to show, left to right")->required();
-  c->add_option("-o,--output", a->output, "Output .png")->required();
+  c->add_option("-o,--output", a->output, "Output .png (- for standard output)")->required();
   c->add_option("--truth", a->truth, "Ground truth: print MSAE (x1e-3) and mean angle under each panel");
   c->add_option("--captions", a->captions, "Comma-separated captions, one per mesh (default: file names)");
   c->add_option("--color", a->color, "none (grey) or error (angle to --truth per face, one shared scale)")

@@ -201,8 +201,8 @@ const Registrar reg("denoise", 50, [](CLI::App& app) {
   a->parameters = std::make_unique<ParameterOptions<DenoiseOptions>>(c, denoise_parameters(), defaults,
                                                                      "(override the preset)");
   c->add_option("--truth", a->truth, "Ground-truth mesh: print error figures of input and result");
-  c->add_option("--save-field", a->field, "Write the edge field v (.txt: 'i j v' per edge; .ply: coloured edges)");
-  c->add_option("--report", a->report, "Write an HTML report: 3D viewer, parameters, errors, convergence plots");
+  c->add_option("--save-field", a->field, "Write the edge field v (.txt: 'i j v' per edge; .ply: coloured edges; -: text to standard output)");
+  c->add_option("--report", a->report, "Write an HTML report: 3D viewer, parameters, errors, convergence plots (-: standard output)");
   c->add_option("--solver", a->solver,
                 "Linear solver of the fixed systems: auto (Cholesky below 80K faces, conjugate gradients above), "
                 "cholesky, cg")

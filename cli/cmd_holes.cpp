@@ -84,7 +84,7 @@ const Registrar reg("holes", 85, [](CLI::App& app) {
       ->capture_default_str();
   c->add_option("--seed", a->seed, "Random seed (same seed, same holes)")->capture_default_str();
   c->add_flag("--on-features", a->on_features, "Centre the holes on sharp edges and corners (dihedral > 60 deg)");
-  c->add_option("--map", a->map, "Write the input index of each output vertex to this text file");
+  c->add_option("--map", a->map, "Write the input index of each output vertex to this text file (-: standard output)");
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
   add_quiet_flag(c, a->quiet);
   c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");

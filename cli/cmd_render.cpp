@@ -71,7 +71,7 @@ const Registrar reg("render", 90, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("render", "Render a mesh to a PNG picture (flat shading, colour maps)");
   c->add_option("input", a->input, "Mesh to render (obj, off, ply, stl)")->required();
-  c->add_option("-o,--output", a->output, "Output .png")->required();
+  c->add_option("-o,--output", a->output, "Output .png (- for standard output)")->required();
   c->add_option("--color", a->color,
                 "none (grey), field (edge field v as coloured edges, --field), error (angle to --truth per face), "
                 "labels (one colour per segment, --labels)")

@@ -150,7 +150,7 @@ const Registrar reg("segment", 70, [](CLI::App& app) {
   CLI::App* c = app.add_subcommand("segment", "Segment a mesh into piecewise-smooth parts (NMSTV edge field + multicut)");
   c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();
   c->add_option("-o,--output", a->output, "Output .ply with one colour per segment on its faces")->required();
-  c->add_option("--labels", a->labels, "Write the segment label of each face (one per line, input order)");
+  c->add_option("--labels", a->labels, "Write the segment label of each face (one per line, input order; -: standard output)");
   c->add_option("--parts", a->parts, "Write each segment as a mesh DIR/part_NNN.obj (re-indexed)");
   c->add_option("--report", a->report, "Write an HTML report: 3D viewer of the segments and edge field, segment table");
   c->add_flag("--denoise", a->denoise_first, "Denoise first (msmesh denoise with the same preset), then segment");
