@@ -268,13 +268,19 @@ void OutputPlan::begin() {
   for (const File& parts : parts_) check_parts_folder(parts.path);
 
   transaction_ = std::make_unique<OutputTransaction>();
+  // "-", and any other name of what standard output is (/dev/stdout, the file it was redirected
+  // to), is written through descriptor 1 (at its offset: `>>` appends), and what the run
+  // prints goes to standard error, so that the data stay alone there.
+  const std::optional<Identity> standard_output = output_identity(kStandardOutput);
   bool to_stdout = false;
-  for (const File& o : outputs_)
-    if (o.path == kStandardOutput) {
+  for (const File& o : outputs_) {
+    const std::optional<Identity> id = output_identity(o.path);
+    if (o.path == kStandardOutput || (standard_output && id && *id == *standard_output)) {
       transaction_->send_to_standard_output(o.path);
       to_stdout = true;
     }
-  if (to_stdout) saved_cout_ = std::cout.rdbuf(std::cerr.rdbuf());  // keep the data alone on stdout
+  }
+  if (to_stdout) saved_cout_ = std::cout.rdbuf(std::cerr.rdbuf());
 }
 
 void OutputPlan::commit() {

@@ -259,6 +259,19 @@ TEST(SpecialOutputs, DashIsStandardOutputForPicturesAndTextNotForMeshes) {
   const std::string labels = read_bytes(data);
   EXPECT_EQ(std::count(labels.begin(), labels.end(), '\n'), 72) << labels;
   EXPECT_NE(read_bytes(err).find("\"segments\""), std::string::npos) << read_bytes(err);
+  // Another name of standard output (/dev/stdout, the file it is redirected to) is written the
+  // same way: the data alone, the summary on stderr.
+  run = run_command("(" + std::string(MSMESH_CLI_PATH) + " render " + q(s.in) + " -o /dev/stdout 2>" + q(err) +
+                    ") > " + q(data));
+  EXPECT_EQ(run.status, 0) << read_bytes(err);
+  EXPECT_EQ(read_bytes(data).substr(0, 8), "\x89PNG\r\n\x1a\n");
+  EXPECT_NE(read_bytes(err).find("rendered"), std::string::npos) << read_bytes(err);
+  const std::string mesh = s.d.file("n.obj");
+  run = run_command("(" + std::string(MSMESH_CLI_PATH) + " noise " + q(s.in) + " -o " + q(mesh) + " 2>" + q(err) +
+                    ") > " + q(mesh));
+  EXPECT_EQ(run.status, 0) << read_bytes(err);
+  EXPECT_EQ(read_mesh(mesh).F.rows(), 72);
+  fs::remove(mesh);
   fs::remove(data);
   fs::remove(err);
   fs::remove(s.d.file("o.ply"));
@@ -266,6 +279,13 @@ TEST(SpecialOutputs, DashIsStandardOutputForPicturesAndTextNotForMeshes) {
        std::vector<std::string>{"denoise " + q(s.in) + " -o -", "features " + q(s.in) + " -o -",
                                 "segment " + q(s.in) + " -o -", std::string("shape cube -o -")})
     expect_refused(args, 2, "cannot be written to standard output", s.d.path());
+  const std::string both = "segment " + q(s.in) + " -o " + q(s.d.file("o.ply")) + " --labels /dev/stdout --report -";
+  const Snapshot before = snapshot(s.d.path());
+  run = run_command("(" + std::string(MSMESH_CLI_PATH) + " " + both + " | cat)");  // standard output: a pipe
+  EXPECT_EQ(run.status, 0) << run.out;  // the status of cat; the message says what msmesh did
+  EXPECT_NE(run.out.find("two outputs are the same file: --labels '/dev/stdout' and --report '-'"), std::string::npos)
+      << run.out;
+  EXPECT_TRUE(snapshot(s.d.path()) == before);
 }
 
 TEST(SpecialOutputs, SymbolicLinkOutputWritesItsTargetAndStays) {
