@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "output_plan.h"
 #include "msmesh/color_bar.h"
 #include "msmesh/errors.h"
 #include "msmesh/image.h"
@@ -59,6 +60,10 @@ void run(const Args& a) {
   ro.supersample = a.supersample;
   ro.validate();
 
+  OutputPlan plan;  // every file of the run, checked before any work; outputs committed together
+  for (const std::string& p : a.inputs) plan.input(p);
+  plan.input(a.truth, "--truth").output(a.output, OutputKind::Png, "-o");
+  plan.begin();
   std::vector<Mesh> meshes;
   for (const auto& p : a.inputs) meshes.push_back(read_mesh(p));
   Mesh truth;
@@ -138,6 +143,7 @@ void run(const Args& a) {
   Image framed(sheet.width + 16, sheet.height + 12);
   blit(framed, sheet, 8, 6);
   write_png(a.output, framed);
+  plan.commit();
 
   if (!a.quiet) {
     std::cout << "compared " << n << " meshes -> " << a.output << " (" << framed.width << "x" << framed.height
@@ -158,7 +164,7 @@ const Registrar reg("compare", 95, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("compare", "Render several meshes side by side into one PNG sheet (with error figures)");
   c->add_option("inputs", a->inputs, "Meshes to show, left to right")->required();
-  c->add_option("-o,--output", a->output, "Output .png")->required();
+  c->add_option("-o,--output", a->output, "Output .png (- for standard output)")->required();
   c->add_option("--truth", a->truth, "Ground truth: print MSAE (x1e-3) and mean angle under each panel");
   c->add_option("--captions", a->captions, "Comma-separated captions, one per mesh (default: file names)");
   c->add_option("--color", a->color, "none (grey) or error (angle to --truth per face, one shared scale)")

@@ -19,6 +19,7 @@
 #include "parameter_options.h"
 #include "field_files.h"
 #include "figures.h"
+#include "output_plan.h"
 #include "run_reports.h"
 #include "usage_error.h"
 
@@ -45,7 +46,11 @@ void run(const Args& a) {
   a.parameters->check();
   if (!a.field.empty() && method == DenoiseMethod::Bilateral)
     throw UsageError("--save-field needs --method nmstv or mstv (bilateral has no edge field)");
-  check_not_overwriting_input(a.input, a.output, a.in_place);
+  OutputPlan plan;  // every file of the run, checked before any work; outputs committed together
+  plan.input(a.input).input(a.truth, "--truth").in_place(a.in_place);
+  plan.output(a.output, OutputKind::Mesh, "-o").output(a.field, OutputKind::Text, "--save-field")
+      .output(a.report, OutputKind::Text, "--report");
+  plan.begin();
   const auto t_read0 = std::chrono::steady_clock::now();
   ReadNotes notes;
   Mesh mesh = read_mesh(a.input, notes);
@@ -95,6 +100,7 @@ void run(const Args& a) {
   if (!a.report.empty())
     write_denoise_report(a.report, a.input, mesh, out.V, a.truth.empty() ? nullptr : &truth, a.method, preset.preset, o, r,
                          ev_in, ev_out);
+  plan.commit();
 
   if (a.json) {
     Json j;
@@ -196,8 +202,8 @@ const Registrar reg("denoise", 50, [](CLI::App& app) {
   a->parameters = std::make_unique<ParameterOptions<DenoiseOptions>>(c, denoise_parameters(), defaults,
                                                                      "(override the preset)");
   c->add_option("--truth", a->truth, "Ground-truth mesh: print error figures of input and result");
-  c->add_option("--save-field", a->field, "Write the edge field v (.txt: 'i j v' per edge; .ply: coloured edges)");
-  c->add_option("--report", a->report, "Write an HTML report: 3D viewer, parameters, errors, convergence plots");
+  c->add_option("--save-field", a->field, "Write the edge field v (.txt: 'i j v' per edge; .ply: coloured edges; -: text to standard output)");
+  c->add_option("--report", a->report, "Write an HTML report: 3D viewer, parameters, errors, convergence plots (-: standard output)");
   c->add_option("--solver", a->solver,
                 "Linear solver of the fixed systems: auto (Cholesky below 80K faces, conjugate gradients above), "
                 "cholesky, cg")

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "command.h"
+#include "output_plan.h"
 #include "json.h"
 #include "msmesh/denoise.h"
 #include "msmesh/presets.h"
@@ -22,7 +23,9 @@ struct Args {
 };
 
 void run(const Args& a) {
-  check_not_overwriting_input(a.input, a.output, a.in_place);
+  OutputPlan plan;  // every file of the run, checked before any work; outputs committed together
+  plan.input(a.input).in_place(a.in_place).output(a.output, OutputKind::Polylines, "-o");
+  plan.begin();
   const auto t0 = std::chrono::steady_clock::now();
   Mesh mesh = read_mesh(a.input);
   const DenoiseOptions preset = preset_options(a.preset);
@@ -35,6 +38,7 @@ void run(const Args& a) {
   finish_progress_line();
   const auto lines = feature_lines(mesh.V, mesh.F, nf.v, a.threshold, a.min_edges);
   write_polylines(a.output, mesh.V, lines);
+  plan.commit();
   long long edges = 0, closed = 0;
   double length = 0;
   for (const auto& l : lines) {

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "output_plan.h"
 #include "json.h"
 #include "msmesh/errors.h"
 #include "msmesh/punch_holes.h"
@@ -21,8 +22,11 @@ struct Args {
 };
 
 void run(const Args& a) {
-  check_not_overwriting_input(a.input, a.output, a.in_place);
   if (a.seed < 0) throw InvalidInput("holes: --seed must be >= 0");
+  OutputPlan plan;  // every file of the run, checked before any work; outputs committed together
+  plan.input(a.input).in_place(a.in_place);
+  plan.output(a.output, OutputKind::Mesh, "-o").output(a.map, OutputKind::Text, "--map");
+  plan.begin();
   const Mesh mesh = read_mesh(a.input);
   const PunchResult r =
       punch_holes(mesh.V, mesh.F, a.count, a.radius, static_cast<std::uint64_t>(a.seed), a.on_features);
@@ -46,6 +50,7 @@ void run(const Args& a) {
     for (Eigen::Index i = 0; i < r.vertex_map.size(); ++i) os << r.vertex_map(i) << "\n";
     write_text_file(a.map, os.str());
   }
+  plan.commit();
   if (a.json) {
     Json j;
     j.add("input", a.input).add("output", a.output).add("requested", a.count).add("punched", r.punched)
@@ -79,7 +84,7 @@ const Registrar reg("holes", 85, [](CLI::App& app) {
       ->capture_default_str();
   c->add_option("--seed", a->seed, "Random seed (same seed, same holes)")->capture_default_str();
   c->add_flag("--on-features", a->on_features, "Centre the holes on sharp edges and corners (dihedral > 60 deg)");
-  c->add_option("--map", a->map, "Write the input index of each output vertex to this text file");
+  c->add_option("--map", a->map, "Write the input index of each output vertex to this text file (-: standard output)");
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
   add_quiet_flag(c, a->quiet);
   c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");

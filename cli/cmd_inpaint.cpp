@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "output_plan.h"
 #include "json.h"
 #include "msmesh/errors.h"
 #include "msmesh/inpaint.h"
@@ -95,7 +96,10 @@ void run(const Args& a) {
   o.holes = a.holes;
   a.parameters->apply(o);
   o.validate();
-  check_not_overwriting_input(a.input, a.output, a.in_place);
+  OutputPlan plan;  // every file of the run, checked before any work; outputs committed together
+  plan.input(a.input).input(a.truth, "--truth").in_place(a.in_place);
+  plan.output(a.output, OutputKind::Mesh, "-o").output(a.report, OutputKind::Text, "--report");
+  plan.begin();
   const Mesh mesh = read_mesh(a.input);
   Mesh truth;
   if (!a.truth.empty()) truth = read_mesh(a.truth);
@@ -123,6 +127,7 @@ void run(const Args& a) {
   InpaintErrors err;
   if (!a.truth.empty()) err = inpaint_errors(mesh.V, mesh.F, r.V, r.F, r.new_faces, truth.V, truth.F);
   if (!a.report.empty()) write_inpaint_report(a.report, a.input, mesh, r, a.truth.empty() ? nullptr : &truth, o);
+  plan.commit();
 
   if (a.json) {
     Json j;

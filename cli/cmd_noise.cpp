@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "command.h"
+#include "output_plan.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/io.h"
@@ -21,7 +22,9 @@ void run(const Args& a) {
   NoiseOptions o = a.options;
   o.direction = a.direction == "random" ? NoiseDirection::Random : NoiseDirection::Normal;
   o.validate();  // before any file is touched
-  check_not_overwriting_input(a.input, a.output, a.in_place);
+  OutputPlan plan;  // every file of the run, checked before any work; outputs committed together
+  plan.input(a.input).in_place(a.in_place).output(a.output, OutputKind::Mesh, "-o");
+  plan.begin();
 
   Mesh mesh = read_mesh(a.input);
   const Eigen::MatrixXd V = add_noise(mesh.V, mesh.F, o);
@@ -33,6 +36,7 @@ void run(const Args& a) {
   WriteOptions wo;
   wo.binary = !a.ascii;
   write_mesh(a.output, mesh, wo);
+  plan.commit();
 
   if (a.quiet) return;
   std::cout << "noise: " << a.input << " -> " << a.output << ": "

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "command.h"
+#include "output_plan.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/metrics.h"
@@ -22,7 +23,6 @@ struct Args {
 };
 
 void run(const Args& a) {
-  const Mesh mesh = read_mesh(a.input);
   RenderOptions ro;
   std::tie(ro.width, ro.height) = parse_size(a.size);
   ro.view = view_from_name(a.view);
@@ -31,18 +31,25 @@ void run(const Args& a) {
   // Field and label lines carry the information: thicker than feature edges by default.
   ro.line_width = a.line_width > 0 ? a.line_width : (a.color == "field" || a.color == "labels" ? 2.5 : 1.5);
   ro.validate();
+  if (a.color == "error" && a.truth.empty()) throw InvalidInput("render: --color error needs --truth GT");
+  if (a.color == "field" && a.field.empty())
+    throw InvalidInput("render: --color field needs --field FILE (from denoise --save-field)");
+  if (a.color == "labels" && a.labels.empty())
+    throw InvalidInput("render: --color labels needs --labels FILE (from segment --labels)");
+  OutputPlan plan;  // every file of the run, checked before any work; outputs committed together
+  plan.input(a.input).input(a.truth, "--truth").input(a.field, "--field").input(a.labels, "--labels");
+  plan.output(a.output, OutputKind::Png, "-o");
+  plan.begin();
+  const Mesh mesh = read_mesh(a.input);
 
   Coloring c;
   if (a.color == "error") {
-    if (a.truth.empty()) throw InvalidInput("render: --color error needs --truth GT");
     const Mesh truth = read_mesh(a.truth);
     const NormalErrors e = normal_errors(mesh.V, mesh.F, truth.V, truth.F);
     c = error_coloring(e.angle_rad * (180.0 / M_PI), a.error_max);
   } else if (a.color == "field") {
-    if (a.field.empty()) throw InvalidInput("render: --color field needs --field FILE (from denoise --save-field)");
     c = field_coloring(mesh.F, mesh.V.rows(), read_edge_field(a.field, build_topology(mesh.F, mesh.V.rows())));
   } else if (a.color == "labels") {
-    if (a.labels.empty()) throw InvalidInput("render: --color labels needs --labels FILE (from segment --labels)");
     c = label_coloring(mesh.F, mesh.V.rows(), read_face_labels(a.labels, mesh.F.rows()));
   }
   if (a.feature_angle > 0 && c.style.lines.rows() == 0) {
@@ -51,6 +58,7 @@ void run(const Args& a) {
   }
   const Image image = add_color_bar(render_mesh(mesh.V, mesh.F, c.style, ro), c);
   write_png(a.output, image);
+  plan.commit();
   if (!a.quiet) {
     std::cout << "rendered " << a.input << " -> " << a.output << " (" << image.width << "x" << image.height << ", view "
               << a.view << (a.perspective ? ", perspective" : "") << ", colour " << a.color;
@@ -63,7 +71,7 @@ const Registrar reg("render", 90, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("render", "Render a mesh to a PNG picture (flat shading, colour maps)");
   c->add_option("input", a->input, "Mesh to render (obj, off, ply, stl)")->required();
-  c->add_option("-o,--output", a->output, "Output .png")->required();
+  c->add_option("-o,--output", a->output, "Output .png (- for standard output)")->required();
   c->add_option("--color", a->color,
                 "none (grey), field (edge field v as coloured edges, --field), error (angle to --truth per face), "
                 "labels (one colour per segment, --labels)")

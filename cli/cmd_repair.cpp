@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "command.h"
+#include "output_plan.h"
 #include "json.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
@@ -31,7 +32,9 @@ void run(const Args& a) {
   o.remove_unreferenced = a.remove_unreferenced;
   o.validate();
   if (a.output.empty() && !a.dry_run) throw InvalidInput("repair: give an output file (-o) or --dry-run");
-  if (!a.output.empty()) check_not_overwriting_input(a.input, a.output, a.in_place);
+  OutputPlan plan;  // every file of the run, checked before any work; outputs committed together
+  plan.input(a.input).in_place(a.in_place).output(a.dry_run ? std::string() : a.output, OutputKind::Mesh, "-o");
+  plan.begin();
 
   Eigen::Index dropped = 0;
   Mesh mesh = read_mesh(a.input, &dropped);
@@ -44,6 +47,7 @@ void run(const Args& a) {
     wo.binary = !a.ascii;
     write_mesh(a.output, mesh, wo);
   }
+  plan.commit();
 
   if (a.quiet) return;
   if (a.json) {

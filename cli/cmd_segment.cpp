@@ -18,6 +18,7 @@
 #include "parameter_options.h"
 #include "field_files.h"
 #include "figures.h"
+#include "output_plan.h"
 #include "run_reports.h"
 
 namespace msmesh::cli {
@@ -66,10 +67,11 @@ void run(const Args& a) {
   o.normals = preset.normals;
   a.parameters->apply(o);
   o.validate();
-  if (mesh_format_from_path(a.output) != "ply")
-    throw InvalidInput("segment: the output '" + a.output + "' must be a .ply file (it carries one colour per face)");
-  check_not_overwriting_input(a.input, a.output, a.in_place);
-  if (!a.labels.empty()) check_not_overwriting_input(a.input, a.labels, a.in_place);
+  OutputPlan plan;  // every file of the run, checked before any work; outputs committed together
+  plan.input(a.input).in_place(a.in_place);
+  plan.output(a.output, OutputKind::PlyMesh, "-o").output(a.labels, OutputKind::Text, "--labels")
+      .output(a.report, OutputKind::Text, "--report").parts_folder(a.parts, "--parts");
+  plan.begin();
   const auto t0 = std::chrono::steady_clock::now();
   Mesh mesh = read_mesh(a.input);
 
@@ -98,15 +100,14 @@ void run(const Args& a) {
   std::vector<Eigen::Index> face_count(r.count, 0);
   for (Eigen::Index f = 0; f < r.labels.size(); ++f) ++face_count[r.labels(f)];
   if (!a.parts.empty()) {
-    std::error_code ec;
-    std::filesystem::create_directories(a.parts, ec);
-    if (ec) throw IoError("cannot create the folder '" + a.parts + "': " + ec.message());
+    create_output_folder(a.parts);  // removed again if the run fails
     for (int s = 0; s < r.count; ++s) {
       char name[32];
       std::snprintf(name, sizeof name, "part_%03d.obj", s);
       write_mesh((std::filesystem::path(a.parts) / name).string(), extract_part(mesh, r.labels, s));
     }
   }
+  plan.commit();
   const double total_area = r.areas.sum();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -149,7 +150,7 @@ const Registrar reg("segment", 70, [](CLI::App& app) {
   CLI::App* c = app.add_subcommand("segment", "Segment a mesh into piecewise-smooth parts (NMSTV edge field + multicut)");
   c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();
   c->add_option("-o,--output", a->output, "Output .ply with one colour per segment on its faces")->required();
-  c->add_option("--labels", a->labels, "Write the segment label of each face (one per line, input order)");
+  c->add_option("--labels", a->labels, "Write the segment label of each face (one per line, input order; -: standard output)");
   c->add_option("--parts", a->parts, "Write each segment as a mesh DIR/part_NNN.obj (re-indexed)");
   c->add_option("--report", a->report, "Write an HTML report: 3D viewer of the segments and edge field, segment table");
   c->add_flag("--denoise", a->denoise_first, "Denoise first (msmesh denoise with the same preset), then segment");

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "command.h"
+#include "output_plan.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/shapes.h"
@@ -31,10 +32,14 @@ void run(const Args& a) {
   if (a.name.empty()) throw InvalidInput("shape: give a NAME (msmesh shape --list shows them)");
   const int patch_count = shape_patch_count(a.name);  // an unknown name throws, listing the valid ones
   if (a.output.empty()) throw InvalidInput("shape: give the output file with -o OUT");
+  OutputPlan plan;  // every file of the run, checked before any work; outputs committed together
+  plan.output(a.output, OutputKind::Mesh, "-o");
+  plan.begin();
   const Mesh mesh = make_shape(a.name, a.resolution);
   WriteOptions wo;
   wo.binary = !a.ascii;
   write_mesh(a.output, mesh, wo);
+  plan.commit();
   if (a.quiet) return;
   std::cout << "shape: " << a.name << " at resolution " << a.resolution << " -> " << a.output << ": "
             << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces, " << patches(patch_count) << "\n";

@@ -30,9 +30,6 @@ ProgressCallback make_progress_bar(bool quiet);
 /// Ends the current progress line, if one was drawn.
 void finish_progress_line();
 
-/// Refuses to write over `output` when it is the same file as `input` unless allowed.
-void check_not_overwriting_input(const std::string& input, const std::string& output, bool allowed);
-
 /// -q,--quiet, the same on every subcommand: no progress bar and no summary. Errors, notes of
 /// what was dropped or repaired in the data, and output asked for with --json still appear.
 inline CLI::Option* add_quiet_flag(CLI::App* c, bool& quiet) {

@@ -45,13 +45,6 @@ void finish_progress_line() {
   }
 }
 
-void check_not_overwriting_input(const std::string& input, const std::string& output, bool allowed) {
-  if (allowed) return;
-  std::error_code ec;
-  if (std::filesystem::exists(output, ec) && std::filesystem::equivalent(input, output, ec))
-    throw InvalidInput("refusing to overwrite the input file '" + input + "' (pass --in-place to allow it)");
-}
-
 std::string fmt(double x, int precision) {
   std::ostringstream os;
   os.precision(precision);

@@ -1,13 +1,18 @@
 // msmesh: command-line front end. Every subcommand lives in its own cmd_*.cpp.
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "command.h"
+#include "msmesh/atomic_file.h"
 #include "msmesh/errors.h"
 #include "msmesh/threads.h"
 #include "usage_error.h"
@@ -105,13 +110,34 @@ int report_error(const std::string& message, int status) {
   return status;
 }
 
+/// A closed standard stream (`>&-`) gets /dev/null opened read-only in its place: the next file
+/// opened cannot take its number (so a summary cannot land in an output file) and writes to it
+/// still fail (EBADF), which finish_standard_output() reports.
+void reserve_standard_streams() {
+  for (int fd = 0; fd <= 2; ++fd)
+    if (::fcntl(fd, F_GETFD) < 0 && errno == EBADF) {
+      const int got = ::open("/dev/null", O_RDONLY);
+      if (got >= 0 && got != fd) ::close(got);  // cannot happen: open takes the lowest free number
+    }
+}
+
+/// Flushes standard output and says whether everything printed reached it (a full disk, a
+/// closed descriptor); "" or the reason.
+std::string finish_standard_output() {
+  std::cout.flush();
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  const int err = errno;
+  if (flushed && std::cout.good() && !std::ferror(stdout)) return "";
+  if (!flushed && err != 0) return std::strerror(err);
+  return ::write(STDOUT_FILENO, "", 0) < 0 ? std::strerror(errno) : "write error";
+}
+
 constexpr int kUsageStatus = 2;    // a wrong subcommand, option, value or combination
 constexpr int kFailureStatus = 1;  // the work failed: unreadable input, solver failure, ...
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  restart_with_runtime_settings(argv);
+/// Parses the command line and runs the subcommand; the exit status.
+int run(int argc, char** argv) {
   CLI::App app{
       "msmesh: feature-preserving mesh processing with a Mumford-Shah model on face normals\n"
       "(denoising, inpainting, segmentation; Liu et al. 2022, NMSTV)."};
@@ -147,4 +173,17 @@ int main(int argc, char** argv) {
     return report_error(e.what(), kFailureStatus);
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  reserve_standard_streams();
+  restart_with_runtime_settings(argv);
+  msmesh::install_output_signal_handlers();  // temporary files removed on SIGINT/SIGTERM/...; SIGXFSZ an error
+  int status = run(argc, argv);
+  const std::string stdout_error = finish_standard_output();
+  if (!stdout_error.empty() && status == 0)
+    status = report_error("cannot write to standard output: " + stdout_error, kFailureStatus);
+  return status;
 }
