@@ -14,6 +14,7 @@
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
+#include "msmesh/parameters.h"
 #include "msmesh/topology.h"
 
 namespace msmesh {
@@ -34,18 +35,29 @@ View view_from_name(const std::string& name) {
   throw InvalidInput("unknown view '" + name + "'; valid: " + list);
 }
 
-void RenderOptions::validate() const {
-  auto bad = [](const std::string& what, double value, const std::string& range) {
-    throw InvalidInput("render option " + what + " = " + std::to_string(value) + " is outside " + range);
+const ParameterTable<RenderOptions>& render_parameters() {
+  using O = RenderOptions;
+  using T = ParameterType;
+  const char* const g = "render";
+  static const ParameterTable<O> t = {
+      bind_parameter(ParameterInfo{"width", "", "pixels", T::Integer, {1, 16384}, "picture width", g}, &O::width),
+      bind_parameter(ParameterInfo{"height", "", "pixels", T::Integer, {1, 16384}, "picture height", g}, &O::height),
+      bind_parameter(ParameterInfo{"supersample", "", "", T::Integer, {1, 4}, "samples per pixel along each axis", g},
+                     &O::supersample),
+      bind_parameter(ParameterInfo{"fov", "", "degrees", T::Real, {0, 120, true, true}, "perspective field of view", g},
+                     &O::fov_deg),
+      bind_parameter(ParameterInfo{"margin", "", "", T::Real, {0, 0.45}, "empty fraction on each side", g},
+                     &O::margin),
+      bind_parameter(ParameterInfo{"ambient", "", "", T::Real, {0}, "ambient shade", g}, &O::ambient),
+      bind_parameter(ParameterInfo{"diffuse", "", "", T::Real, {0}, "diffuse shade", g}, &O::diffuse),
+      bind_parameter(ParameterInfo{"line-width", "", "pixels", T::Real, {0, 20, true, false}, "width of edge lines", g},
+                     &O::line_width),
   };
-  if (width < 1 || width > 16384) bad("width", width, "[1, 16384]");
-  if (height < 1 || height > 16384) bad("height", height, "[1, 16384]");
-  if (supersample < 1 || supersample > 4) bad("supersample", supersample, "[1, 4]");
-  if (!(fov_deg > 0 && fov_deg < 120)) bad("fov_deg", fov_deg, "(0, 120)");
-  if (!(margin >= 0 && margin <= 0.45)) bad("margin", margin, "[0, 0.45]");
-  if (!(ambient >= 0) || !std::isfinite(ambient)) bad("ambient", ambient, "[0, inf)");
-  if (!(diffuse >= 0) || !std::isfinite(diffuse)) bad("diffuse", diffuse, "[0, inf)");
-  if (!(line_width > 0 && line_width <= 20)) bad("line_width", line_width, "(0, 20]");
+  return t;
+}
+
+void RenderOptions::validate() const {
+  check_parameters(render_parameters(), *this);
   if (!light.allFinite() || light.norm() == 0) throw InvalidInput("render option light must be a non-zero finite vector");
   if (frame_points.size() != 0 && (frame_points.cols() != 3 || !frame_points.allFinite()))
     throw InvalidInput("render option frame_points must be #P by 3 and finite");

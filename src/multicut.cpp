@@ -10,18 +10,25 @@
 #include <vector>
 
 #include "msmesh/errors.h"
+#include "msmesh/parameters.h"
 
 namespace msmesh {
 
-void MulticutOptions::validate() const {
-  auto fail = [](const char* name, double value, const char* range) {
-    std::ostringstream os;
-    os << "multicut: " << name << " = " << value << " is out of range; valid: " << range;
-    throw InvalidInput(os.str());
+const ParameterTable<MulticutOptions>& multicut_parameters() {
+  using O = MulticutOptions;
+  using T = ParameterType;
+  static const ParameterTable<O> t = {
+      bind_parameter(ParameterInfo{"max-local-rounds", "", "", T::Integer, {0, 2147483647},
+                                   "maximum rounds of the local search", "multicut"},
+                     &O::max_local_rounds),
+      bind_parameter(ParameterInfo{"tolerance", "", "", T::Real, {0},
+                                   "a move must lower the objective by more than this", "multicut"},
+                     &O::tolerance),
   };
-  if (max_local_rounds < 0) fail("max_local_rounds", max_local_rounds, ">= 0");
-  if (!(std::isfinite(tolerance) && tolerance >= 0)) fail("tolerance", tolerance, ">= 0");
+  return t;
 }
+
+void MulticutOptions::validate() const { check_parameters(multicut_parameters(), *this); }
 
 namespace {
 

@@ -8,21 +8,32 @@
 
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
+#include "msmesh/parameters.h"
 #include "random.h"
 
 namespace msmesh {
 
+const ParameterTable<NoiseOptions>& noise_parameters() {
+  using O = NoiseOptions;
+  using T = ParameterType;
+  static const ParameterTable<O> t = {
+      // σ beyond a million mean edge lengths only moves vertices out of any meaningful range
+      // (1e308 made every coordinate infinite).
+      bind_parameter(ParameterInfo{"sigma", "σ", "mean edge lengths", T::Real, {0, 1e6},
+                                   "standard deviation of the displacement", "noise"},
+                     &O::sigma),
+      bind_parameter(ParameterInfo{"impulsive", "", "", T::Real, {0, 1},
+                                   "displace only this fraction of the vertices (0: every vertex)", "noise"},
+                     &O::impulsive_fraction),
+      bind_parameter(ParameterInfo{"seed", "", "", T::Integer, {0, kLargestExactInteger},
+                                   "random seed; the same seed gives the same mesh on any machine", "noise"},
+                     &O::seed),
+  };
+  return t;
+}
+
 void NoiseOptions::validate() const {
-  if (!std::isfinite(sigma) || sigma < 0) {
-    std::ostringstream os;
-    os << "noise: sigma = " << sigma << " is invalid; it must be a finite number >= 0 (in mean edge lengths)";
-    throw InvalidInput(os.str());
-  }
-  if (!(impulsive_fraction >= 0 && impulsive_fraction <= 1)) {  // also rejects NaN
-    std::ostringstream os;
-    os << "noise: impulsive_fraction = " << impulsive_fraction << " is invalid; it must lie in [0, 1]";
-    throw InvalidInput(os.str());
-  }
+  check_parameters(noise_parameters(), *this);
   if (direction != NoiseDirection::Normal && direction != NoiseDirection::Random)
     throw InvalidInput("noise: direction must be NoiseDirection::Normal or NoiseDirection::Random");
 }
@@ -71,6 +82,9 @@ Eigen::MatrixXd add_noise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, co
       out.row(v) += u * (stddev * rng.gaussian());
     }
   }
+  if (!out.allFinite())
+    throw InvalidInput("noise: sigma = " + std::to_string(options.sigma) +
+                       " mean edge lengths moves vertices beyond the range of finite coordinates");
   return out;
 }
 

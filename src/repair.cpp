@@ -16,21 +16,26 @@
 #include <Eigen/Geometry>
 
 #include "msmesh/errors.h"
+#include "msmesh/parameters.h"
 #include "msmesh/topology.h"
 
 namespace msmesh {
 
-void RepairOptions::validate() const {
-  auto fail = [](const char* name, double value, const char* range) {
-    std::ostringstream os;
-    os << "repair: " << name << " = " << value << " is out of range; valid: " << range;
-    throw InvalidInput(os.str());
+const ParameterTable<RepairOptions>& repair_parameters() {
+  using O = RepairOptions;
+  using T = ParameterType;
+  static const ParameterTable<O> t = {
+      bind_parameter(ParameterInfo{"weld", "", "mean edge lengths", T::Real, {0, 1},
+                                   "merge vertices closer than this (0: exact duplicates only)", "repair"},
+                     &O::weld_tolerance),
+      bind_parameter(ParameterInfo{"zero-area-tolerance", "", "squared mean edge lengths", T::Real, {0, 1},
+                                   "faces of at most this area are degenerate", "repair"},
+                     &O::zero_area_tolerance),
   };
-  if (!(std::isfinite(weld_tolerance) && weld_tolerance >= 0 && weld_tolerance <= 1))
-    fail("weld_tolerance", weld_tolerance, "[0, 1] (a fraction of the mean edge length)");
-  if (!(std::isfinite(zero_area_tolerance) && zero_area_tolerance >= 0 && zero_area_tolerance <= 1))
-    fail("zero_area_tolerance", zero_area_tolerance, "[0, 1] (a fraction of the squared mean edge length)");
+  return t;
 }
+
+void RepairOptions::validate() const { check_parameters(repair_parameters(), *this); }
 
 bool RepairReport::changed() const {
   return merged_vertices || degenerate_faces_removed || zero_area_faces_removed || duplicate_faces_removed ||
