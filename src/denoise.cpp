@@ -11,6 +11,7 @@
 #include "msmesh/memory.h"
 #include "msmesh/mesh.h"
 #include "msmesh/topology.h"
+#include "sub_mesh.h"
 #include "union_find.h"
 
 namespace msmesh {
@@ -101,34 +102,23 @@ DenoiseResult denoise_components(const Eigen::MatrixXd& V, const Eigen::MatrixXi
                                  int count, const DenoiseOptions& o, const ProgressCallback& progress) {
   DenoiseResult r;
   r.V = V;
-  r.normals.resize(F.rows(), 3);
+  r.normals = Eigen::MatrixXd::Zero(F.rows(), 3);
   const Topology topo = build_topology(F, V.rows());
   const bool has_field = o.method != DenoiseMethod::Bilateral;
   if (has_field) r.v = Eigen::VectorXd::Ones(topo.num_edges());
   std::vector<int> local(static_cast<std::size_t>(V.rows()), -1);
+  std::vector<std::vector<Eigen::Index>> faces_of(static_cast<std::size_t>(count));
+  for (Eigen::Index f = 0; f < F.rows(); ++f) faces_of[static_cast<std::size_t>(label[f])].push_back(f);
   Eigen::Index largest = -1;
-  for (int c = 0; c < count; ++c) {
-    std::vector<Eigen::Index> faces;
-    for (Eigen::Index f = 0; f < F.rows(); ++f)
-      if (label[static_cast<std::size_t>(f)] == c) faces.push_back(f);
-    std::vector<int> global;
-    Eigen::MatrixXi Fc(static_cast<Eigen::Index>(faces.size()), 3);
-    for (std::size_t i = 0; i < faces.size(); ++i)
-      for (int k = 0; k < 3; ++k) {
-        const int g = F(faces[i], k);
-        if (local[g] < 0) {
-          local[g] = static_cast<int>(global.size());
-          global.push_back(g);
-        }
-        Fc(static_cast<Eigen::Index>(i), k) = local[g];
-      }
-    Eigen::MatrixXd Vc(static_cast<Eigen::Index>(global.size()), 3);
-    for (std::size_t i = 0; i < global.size(); ++i) Vc.row(static_cast<Eigen::Index>(i)) = V.row(global[i]);
-    DenoiseResult rc = denoise(Vc, Fc, o, progress);
+  for (const std::vector<Eigen::Index>& faces : faces_of) {
+    const detail::SubMesh sub = detail::sub_mesh(V, F, faces, local);
+    const std::vector<int>& global = sub.global;
+    if (!(mean_edge_length(sub.V, sub.F) > 0)) continue;  // all faces degenerate: nothing to scale, kept as it is
+    DenoiseResult rc = denoise(sub.V, sub.F, o, progress);
     for (std::size_t i = 0; i < global.size(); ++i) r.V.row(global[i]) = rc.V.row(static_cast<Eigen::Index>(i));
     for (std::size_t i = 0; i < faces.size(); ++i) r.normals.row(faces[i]) = rc.normals.row(static_cast<Eigen::Index>(i));
     if (has_field) {
-      const Topology tc = build_topology(Fc, Vc.rows());
+      const Topology tc = build_topology(sub.F, sub.V.rows());
       for (std::size_t i = 0; i < faces.size(); ++i)
         for (int k = 0; k < 3; ++k) r.v(topo.face_edges(faces[i], k)) = rc.v(tc.face_edges(static_cast<Eigen::Index>(i), k));
     }
@@ -139,7 +129,6 @@ DenoiseResult denoise_components(const Eigen::MatrixXd& V, const Eigen::MatrixXi
     }
     r.seconds_normals += rc.seconds_normals;
     r.seconds_vertices += rc.seconds_vertices;
-    for (int g : global) local[g] = -1;
   }
   return r;
 }
