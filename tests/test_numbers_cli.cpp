@@ -82,6 +82,16 @@ TEST_F(NumbersCli, IntegerOptionsRefuseFractions) {
   expect_usage_error("render " + in + " -o " + out("r.png") + " --size 800.5x600", "--size");
 }
 
+TEST_F(NumbersCli, BooleanValuesAreStrict) {
+  const std::string holed = out("holed.obj");
+  write_mesh(holed, test::grid_with_hole());
+  for (const char* v : {"nan", "-1", "2", "maybe"})
+    expect_usage_error("inpaint " + holed + " -o " + out("f.obj") + " --project-each-iteration=" + v,
+                       "--project-each-iteration");
+  EXPECT_EQ(test::run_cli("inpaint " + holed + " -o " + out("f.obj") + " --project-each-iteration=off -q").status, 0);
+  EXPECT_EQ(test::run_cli("inpaint " + holed + " -o " + out("g.obj") + " --project-each-iteration -q").status, 0);
+}
+
 TEST_F(NumbersCli, ShapeResolutionZeroGivesAShortRange) {
   const test::CliRun r = test::run_cli("shape cube -o " + out("c.obj") + " --resolution 0");
   EXPECT_EQ(r.status, 2);
