@@ -173,13 +173,12 @@ const Registrar reg("compare", 95, [](CLI::App& app) {
   c->add_option("--view", a->view, "iso, front, back, left, right, top or bottom (+y is up)")
       ->check(CLI::IsMember(view_names()))
       ->capture_default_str();
-  c->add_option("--size", a->size, "Size WxH of each panel in pixels")->capture_default_str();
+  add_size_option(c, a->size, "Size WxH of each panel in pixels");
   c->add_option("--title", a->title, "A title line above the panels");
   c->add_flag("--perspective", a->perspective, "Perspective camera (default orthographic)");
-  c->add_option("--feature-edges", a->feature_angle, "Draw edges sharper than this angle (degrees) dark (0: off)")
-      ->capture_default_str();
-  c->add_option("--error-max", a->error_max, "Top of the error colour scale in degrees (default: automatic)");
-  c->add_option("--supersample", a->supersample, "Samples per pixel along each axis (1-4)")->capture_default_str();
+  add_feature_edges_option(c, a->feature_angle, "Draw edges sharper than this angle dark (0: off)");
+  add_error_max_option(c, a->error_max, "Top of the error colour scale (0: automatic)");
+  add_supersample_option(c, a->supersample);
   add_quiet_flag(c, a->quiet);
   c->callback([a]() { run(*a); });
 });

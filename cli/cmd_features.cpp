@@ -4,6 +4,7 @@
 
 #include "command.h"
 #include "output_plan.h"
+#include "number_option.h"
 #include "json.h"
 #include "msmesh/denoise.h"
 #include "msmesh/presets.h"
@@ -68,9 +69,11 @@ const Registrar reg("features", 75, [](CLI::App& app) {
   CLI::App* c = app.add_subcommand("features", "Extract feature lines where the NMSTV edge field is low");
   c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();
   c->add_option("-o,--output", a->output, "Output polylines: .obj (v/l records) or .ply (edges)")->required();
-  c->add_option("--threshold", a->threshold, "Edges with normalised v below this, in (0, 1], are features")
-      ->capture_default_str();
-  c->add_option("--min-edges", a->min_edges, "Drop polylines with fewer edges than this")->capture_default_str();
+  using T = ParameterType;
+  add_number_option(c, "--threshold", a->threshold, cli_number("features", "threshold", T::Real, {0, 1, true, false}),
+                    "Edges with normalised v below this are features");
+  add_number_option(c, "--min-edges", a->min_edges, cli_number("features", "min-edges", T::Integer, {1, 2147483647}),
+                    "Drop polylines with fewer edges than this");
   c->add_flag("--denoise", a->denoise_first, "Denoise first (same preset), then extract the lines");
   c->add_option("--preset", a->preset, "Normal filter parameters: cad (sharp features) or smooth (organic)")
       ->check(CLI::IsMember({"cad", "smooth"}))

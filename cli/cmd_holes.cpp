@@ -5,6 +5,7 @@
 
 #include "command.h"
 #include "output_plan.h"
+#include "number_option.h"
 #include "json.h"
 #include "msmesh/errors.h"
 #include "msmesh/punch_holes.h"
@@ -30,6 +31,9 @@ void run(const Args& a) {
   const Mesh mesh = read_mesh(a.input);
   const PunchResult r =
       punch_holes(mesh.V, mesh.F, a.count, a.radius, static_cast<std::uint64_t>(a.seed), a.on_features);
+  if (r.F.rows() == 0)
+    throw InvalidInput("holes: the holes (radius " + fmt(a.radius) + " mean edge lengths) would remove every face of '" +
+                       a.input + "'; nothing written (use a smaller --radius or --count)");
   Mesh out;
   out.V = r.V;
   out.F = r.F;
@@ -79,10 +83,12 @@ const Registrar reg("holes", 85, [](CLI::App& app) {
   CLI::App* c = app.add_subcommand("holes", "Punch holes (geodesic disks) into a mesh, for inpainting tests");
   c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();
   c->add_option("-o,--output", a->output, "Output mesh with holes")->required();
-  c->add_option("--count", a->count, "Number of holes")->capture_default_str();
-  c->add_option("--radius", a->radius, "Hole radius in mean edge lengths (geodesic, along edges)")
-      ->capture_default_str();
-  c->add_option("--seed", a->seed, "Random seed (same seed, same holes)")->capture_default_str();
+  using T = ParameterType;
+  add_number_option(c, "--count", a->count, cli_number("holes", "count", T::Integer, {1, 100000}), "Number of holes");
+  add_number_option(c, "--radius", a->radius, cli_number("holes", "radius", T::Real, {0, 1e6, true, false}, "mean edge lengths"),
+                    "Hole radius (geodesic, along edges)");
+  add_number_option(c, "--seed", a->seed, cli_number("holes", "seed", T::Integer, {0, kLargestExactInteger}),
+                    "Random seed (same seed, same holes)");
   c->add_flag("--on-features", a->on_features, "Centre the holes on sharp edges and corners (dihedral > 60 deg)");
   c->add_option("--map", a->map, "Write the input index of each output vertex to this text file (-: standard output)");
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");

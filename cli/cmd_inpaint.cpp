@@ -6,6 +6,7 @@
 
 #include "command.h"
 #include "output_plan.h"
+#include "number_option.h"
 #include "json.h"
 #include "msmesh/errors.h"
 #include "msmesh/inpaint.h"
@@ -94,8 +95,14 @@ void run(const Args& a) {
   if (a.output.empty()) throw UsageError("inpaint: --output is required (or --list to only list the holes)");
   InpaintOptions o;
   o.holes = a.holes;
-  a.parameters->apply(o);
-  o.validate();
+  try {
+    a.parameters->apply(o);
+    o.validate();
+  } catch (const UsageError&) {
+    throw;
+  } catch (const InvalidInput& e) {
+    throw UsageError(e.what());  // a combination of options out of range: still a usage error
+  }
   OutputPlan plan;  // every file of the run, checked before any work; outputs committed together
   plan.input(a.input).input(a.truth, "--truth").in_place(a.in_place);
   plan.output(a.output, OutputKind::Mesh, "-o").output(a.report, OutputKind::Text, "--report");
@@ -211,7 +218,21 @@ const Registrar reg("inpaint", 80, [](CLI::App& app) {
       "inpaint", "Fill holes (CGAL fill-and-fair) and recover their sharp features with NMSTV (paper 6.2)");
   c->add_option("input", a->input, "Input mesh with holes (obj, off, ply, stl)")->required();
   c->add_option("-o,--output", a->output, "Output mesh; format from the extension");
-  c->add_option("--holes", a->holes, "Fill exactly these holes (indices from --list), e.g. 0,2,5")->delimiter(',');
+  const ParameterInfo hole = cli_number("inpaint", "holes", ParameterType::Integer, {0, 2147483647});
+  c->add_option_function<std::vector<std::string>>(
+       "--holes",
+       [a, hole](const std::vector<std::string>& texts) {
+         for (const std::string& t : texts) {
+           try {
+             a->holes.push_back(static_cast<int>(parse_parameter(hole, t, "--holes")));
+           } catch (const InvalidInput& e) {
+             throw UsageError(e.what());
+           }
+         }
+       },
+       "Fill exactly these holes (indices from --list), e.g. 0,2,5")
+      ->delimiter(',')
+      ->type_name("I,J,...");
   c->add_flag("--list", a->list, "Print the holes (index, edges, diameter) and exit");
   c->add_option("--truth", a->truth, "Ground-truth mesh: print the filled region's distance errors");
   c->add_option("--report", a->report, "Write an HTML report: 3D viewer (new faces tinted), hole table, plots");

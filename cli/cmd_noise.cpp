@@ -4,6 +4,7 @@
 
 #include "command.h"
 #include "output_plan.h"
+#include "number_option.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/io.h"
@@ -52,17 +53,15 @@ const Registrar reg("noise", 30, [](CLI::App& app) {
       "noise", "Add seeded noise as in the denoising literature (sigma in units of the mean edge length)");
   c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();
   c->add_option("-o,--output", a->output, "Output mesh; format from the extension")->required();
-  c->add_option("--sigma", a->options.sigma, "Standard deviation, a multiple of the mean edge length (>= 0)")
-      ->capture_default_str();
+  const ParameterTable<NoiseOptions>& table = noise_parameters();
+  add_number_option(c, "--sigma", table[0], a->options, "Standard deviation, a multiple of the mean edge length");
   c->add_option("--direction", a->direction,
                 "normal: along vertex normals; random: uniformly random directions (same RMS length)")
       ->check(CLI::IsMember({"normal", "random"}))
       ->capture_default_str();
-  c->add_option("--impulsive", a->options.impulsive_fraction,
-                "Impulsive noise: displace only this fraction of the vertices, in [0,1] (0: every vertex)")
-      ->capture_default_str();
-  c->add_option("--seed", a->options.seed, "Random seed; the same seed gives the same mesh on any machine")
-      ->capture_default_str();
+  add_number_option(c, "--impulsive", table[1], a->options,
+                    "Impulsive noise: displace only this fraction of the vertices (0: every vertex)");
+  add_number_option(c, "--seed", table[2], a->options, "Random seed; the same seed gives the same mesh on any machine");
   c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");
   add_quiet_flag(c, a->quiet);
   c->add_flag("--in-place", a->in_place, "Allow the output to overwrite the input file");

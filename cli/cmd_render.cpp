@@ -4,6 +4,7 @@
 
 #include "command.h"
 #include "output_plan.h"
+#include "number_option.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/metrics.h"
@@ -83,16 +84,14 @@ const Registrar reg("render", 90, [](CLI::App& app) {
   c->add_option("--view", a->view, "iso, front, back, left, right, top or bottom (+y is up)")
       ->check(CLI::IsMember(view_names()))
       ->capture_default_str();
-  c->add_option("--size", a->size, "Picture size WxH in pixels (a colour bar adds a strip below)")->capture_default_str();
+  add_size_option(c, a->size, "Picture size WxH in pixels (a colour bar adds a strip below)");
   c->add_flag("--perspective", a->perspective, "Perspective camera (default orthographic)");
-  c->add_option("--feature-edges", a->feature_angle,
-                "Draw edges sharper than this dihedral angle (degrees) as thin dark lines (0: off)")
-      ->capture_default_str();
-  c->add_option("--error-max", a->error_max,
-                "Top of the error colour scale in degrees (default: 98th percentile, rounded up)");
-  c->add_option("--line-width", a->line_width, "Width of edge lines in pixels (default 2.5 for field and labels, else 1.5)");
-  c->add_option("--supersample", a->supersample, "Samples per pixel along each axis (1-4; anti-aliasing)")
-      ->capture_default_str();
+  add_feature_edges_option(c, a->feature_angle, "Draw edges sharper than this dihedral angle as thin dark lines (0: off)");
+  add_error_max_option(c, a->error_max, "Top of the error colour scale (0: 98th percentile, rounded up)");
+  using T = ParameterType;
+  add_number_option(c, "--line-width", a->line_width, cli_number("render", "line-width", T::Real, {0, 20}, "pixels"),
+                    "Width of edge lines (0: 2.5 for field and labels, else 1.5)");
+  add_supersample_option(c, a->supersample);
   add_quiet_flag(c, a->quiet);
   c->callback([a]() { run(*a); });
 });

@@ -5,6 +5,7 @@
 
 #include "command.h"
 #include "output_plan.h"
+#include "number_option.h"
 #include "json.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
@@ -99,9 +100,8 @@ const Registrar reg("repair", 45, [](CLI::App& app) {
       "unreferenced vertices); vertex order is kept unless --remove-unreferenced");
   c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();
   c->add_option("-o,--output", a->output, "Output mesh; format from the extension");
-  c->add_option("--weld", a->weld,
-                "Merge vertices closer than this fraction of the mean edge length, in [0, 1] (default 0: exact "
-                "duplicates only)");
+  add_number_option(c, "--weld", a->weld, repair_parameters()[0].info,
+                    "Merge vertices closer than this (0: exact duplicates only)");
   c->add_flag("--keep-duplicate-vertices", a->keep_duplicates, "Do not merge duplicate vertices");
   c->add_flag("--keep-degenerate", a->keep_degenerate, "Do not remove zero-area faces");
   c->add_flag("--keep-duplicate-faces", a->keep_duplicate_faces, "Do not remove duplicate faces");

@@ -5,12 +5,15 @@
 
 #include "command.h"
 #include "output_plan.h"
+#include "number_option.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/shapes.h"
 
 namespace msmesh::cli {
 namespace {
+
+constexpr double kMaxShapeResolution = 1000;  // 6 million faces for a cube-like shape
 
 struct Args {
   std::string name, output;
@@ -50,10 +53,9 @@ const Registrar reg("shape", 20, [](CLI::App& app) {
   CLI::App* c = app.add_subcommand("shape", "Write a built-in procedural test mesh (msmesh shape --list shows the names)");
   c->add_option("name", a->name, "Shape name; --list shows them");
   c->add_option("-o,--output", a->output, "Output mesh; format from the extension (obj, off, ply, stl)");
-  c->add_option("-r,--resolution", a->resolution,
-                "Resolution level >= 1 (larger = finer; about resolution^2 faces per cube face)")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  add_number_option(c, "-r,--resolution", a->resolution,
+                    cli_number("shape", "resolution", ParameterType::Integer, {1, kMaxShapeResolution}),
+                    "Resolution level (larger = finer; about resolution^2 faces per cube face)");
   c->add_flag("--list", a->list, "List the shape names with their numbers of smooth patches");
   c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");
   add_quiet_flag(c, a->quiet);

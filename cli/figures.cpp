@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 #include "field_files.h"
+#include "number_option.h"
+#include "usage_error.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/png.h"
@@ -22,12 +25,50 @@ void write_png(const std::string& path, const Image& image) {
 }
 
 std::pair<int, int> parse_size(const std::string& text) {
-  int w = 0, h = 0;
-  char x = 0, extra = 0;
-  std::istringstream is(text);
-  if (!(is >> w >> x >> h) || (x != 'x' && x != 'X') || (is >> extra) || w < 1 || h < 1 || w > 16384 || h > 16384)
-    throw InvalidInput("size '" + text + "' is not WxH with W and H in [1, 16384] (e.g. 800x600)");
-  return {w, h};
+  const std::size_t x = text.find_first_of("xX");
+  if (x == std::string::npos)
+    throw InvalidInput("--size = '" + text + "' is not WxH with W and H in [1, 16384] (e.g. 800x600)");
+  const ParameterTable<RenderOptions>& t = render_parameters();
+  const double w = parse_parameter(t[0].info, text.substr(0, x), "--size width");
+  const double h = parse_parameter(t[1].info, text.substr(x + 1), "--size height");
+  return {static_cast<int>(w), static_cast<int>(h)};
+}
+
+namespace {
+/// `check(text)` run while the command line is parsed; its InvalidInput becomes a UsageError.
+CLI::Option* checked(CLI::Option* o, std::function<void(const std::string&)> check) {
+  return o->check(CLI::Validator(
+      [check = std::move(check)](std::string& text) {
+        try {
+          check(text);
+        } catch (const InvalidInput& e) {
+          throw UsageError(e.what());
+        }
+        return std::string();
+      },
+      ""));
+}
+}  // namespace
+
+CLI::Option* add_size_option(CLI::App* c, std::string& size, const std::string& help) {
+  return checked(c->add_option("--size", size, help)->capture_default_str(),
+                 [](const std::string& text) { parse_size(text); });
+}
+
+CLI::Option* add_feature_edges_option(CLI::App* c, double& degrees, const std::string& help) {
+  return add_number_option(c, "--feature-edges", degrees,
+                           cli_number(c->get_name(), "feature-edges", ParameterType::Real, {0, 180, false, true}, "degrees"),
+                           help);
+}
+
+CLI::Option* add_supersample_option(CLI::App* c, int& supersample) {
+  return add_number_option(c, "--supersample", supersample, render_parameters()[2].info,
+                           "Samples per pixel along each axis (anti-aliasing)");
+}
+
+CLI::Option* add_error_max_option(CLI::App* c, double& degrees, const std::string& help) {
+  return add_number_option(c, "--error-max", degrees,
+                           cli_number(c->get_name(), "error-max", ParameterType::Real, {0, 180}, "degrees"), help);
 }
 
 double error_scale(const Eigen::VectorXd& values) {

@@ -1,6 +1,7 @@
 // Figure helpers shared by `msmesh render` and `msmesh compare`: PNG files, picture sizes, and
 // colouring a mesh by angle error, edge field or segment label (with the colour bar).
 #pragma once
+#include <CLI/CLI.hpp>
 #include <Eigen/Core>
 #include <string>
 #include <utility>
@@ -15,8 +16,17 @@ namespace msmesh::cli {
 /// Writes `image` as a PNG file (atomically). Throws IoError naming the file.
 void write_png(const std::string& path, const Image& image);
 
-/// Parses "WxH" (e.g. "800x600") into width and height; throws InvalidInput otherwise.
+/// Parses "WxH" (e.g. "800x600") into width and height, each strictly a whole number in the
+/// range of RenderOptions (render_parameters()); throws InvalidInput otherwise.
 std::pair<int, int> parse_size(const std::string& text);
+
+/// The options render and compare share, each checked while the command line is parsed (a
+/// usage error naming the option, exit 2): --size WxH, --feature-edges DEG in [0, 180),
+/// --error-max DEG in [0, 180], --supersample in [1, 4].
+CLI::Option* add_size_option(CLI::App* c, std::string& size, const std::string& help);
+CLI::Option* add_feature_edges_option(CLI::App* c, double& degrees, const std::string& help);
+CLI::Option* add_error_max_option(CLI::App* c, double& degrees, const std::string& help);
+CLI::Option* add_supersample_option(CLI::App* c, int& supersample);
 
 /// The colours and legend of one rendered mesh.
 struct Coloring {

@@ -13,6 +13,7 @@
 
 #include "command.h"
 #include "msmesh/atomic_file.h"
+#include "number_option.h"
 #include "msmesh/errors.h"
 #include "msmesh/threads.h"
 #include "usage_error.h"
@@ -133,6 +134,26 @@ std::string finish_standard_output() {
   return ::write(STDOUT_FILENO, "", 0) < 0 ? std::strerror(errno) : "write error";
 }
 
+/// The input file of the subcommand that ran (its positional "input", "result" or "mesh"),
+/// or "" when it has none.
+std::string input_of(CLI::App& app) {
+  for (CLI::App* sub : app.get_subcommands())
+    for (const char* name : {"input", "result", "mesh"}) {
+      const CLI::Option* o = sub->get_option_no_throw(name);
+      if (o && o->count() == 1 && !o->results().empty()) return o->results().front();
+    }
+  return "";
+}
+
+/// An error of the work names the input file: "in.obj: v-step conjugate gradient did not
+/// converge". File errors (IoError) already start with the file they are about, which may be
+/// another one (--truth), so they are left as they are.
+std::string naming_input(CLI::App& app, const msmesh::Error& e) {
+  const std::string message = e.what(), input = input_of(app);
+  if (input.empty() || dynamic_cast<const msmesh::IoError*>(&e) || message.rfind(input + ":", 0) == 0) return message;
+  return input + ": " + message;
+}
+
 constexpr int kUsageStatus = 2;    // a wrong subcommand, option, value or combination
 constexpr int kFailureStatus = 1;  // the work failed: unreadable input, solver failure, ...
 
@@ -146,11 +167,12 @@ int run(int argc, char** argv) {
   // --threads before or after the subcommand (fallthrough passes it up to here); applied as
   // soon as it is parsed, so before any subcommand runs.
   app.fallthrough();
-  app.add_option_function<int>(
-         "--threads", [](const int& n) { msmesh::set_threads(n); },
-         "Threads for the parallel work (default: every core, or OMP_NUM_THREADS); results are the same for any number")
-      ->check(CLI::Range(1, 4096))
-      ->type_name("N");
+  msmesh::cli::add_number_option(
+      &app, "--threads",
+      msmesh::cli::cli_number("command line", "threads", msmesh::ParameterType::Integer, {1, 4096}),
+      [](double n) { msmesh::set_threads(static_cast<int>(n)); },
+      "Threads for the parallel work (default: every core, or OMP_NUM_THREADS); results are the same for any number",
+      "");
   auto& registry = msmesh::cli::command_registry();
   std::sort(registry.begin(), registry.end(), [](const auto& a, const auto& b) { return a.order < b.order; });
   for (const auto& spec : registry) spec.setup(app);
@@ -166,7 +188,7 @@ int run(int argc, char** argv) {
   } catch (const msmesh::cli::UsageError& e) {
     return report_error(e.what(), kUsageStatus);
   } catch (const msmesh::Error& e) {
-    return report_error(e.what(), kFailureStatus);
+    return report_error(naming_input(app, e), kFailureStatus);
   } catch (const std::bad_alloc&) {
     return report_error("out of memory", kFailureStatus);
   } catch (const std::exception& e) {

@@ -90,7 +90,18 @@ class ParameterOptions {
     for (const auto& e : entries_) {
       const ParameterInfo& i = e->p->info;
       if (i.type == ParameterType::Boolean) {
-        const bool on = e->on->count() > 0, off = e->off->count() > 0;
+        // --name=VALUE is strict as every number: 0/1, true/false, yes/no, on/off.
+        bool on = false, off = false;
+        for (const CLI::Option* flag : {e->on, e->off})
+          for (const std::string& text : flag->results()) {
+            double x = 0;
+            try {
+              x = parse_parameter(i, text.empty() ? "1" : text, flag->get_name());
+            } catch (const InvalidInput& bad) {
+              throw UsageError(bad.what());
+            }
+            ((x != 0) == (flag == e->on) ? on : off) = true;
+          }
         if (on && off) throw UsageError("--" + i.name + " and --no-" + i.name + " contradict each other");
         if (on || off) e->p->set(o, on ? 1.0 : 0.0);
         continue;

@@ -35,17 +35,29 @@ View view_from_name(const std::string& name) {
   throw InvalidInput("unknown view '" + name + "'; valid: " + list);
 }
 
+const ParameterTable<RenderOptions>& render_parameters() {
+  using O = RenderOptions;
+  using T = ParameterType;
+  const char* const g = "render";
+  static const ParameterTable<O> t = {
+      bind_parameter(ParameterInfo{"width", "", "pixels", T::Integer, {1, 16384}, "picture width", g}, &O::width),
+      bind_parameter(ParameterInfo{"height", "", "pixels", T::Integer, {1, 16384}, "picture height", g}, &O::height),
+      bind_parameter(ParameterInfo{"supersample", "", "", T::Integer, {1, 4}, "samples per pixel along each axis", g},
+                     &O::supersample),
+      bind_parameter(ParameterInfo{"fov", "", "degrees", T::Real, {0, 120, true, true}, "perspective field of view", g},
+                     &O::fov_deg),
+      bind_parameter(ParameterInfo{"margin", "", "", T::Real, {0, 0.45}, "empty fraction on each side", g},
+                     &O::margin),
+      bind_parameter(ParameterInfo{"ambient", "", "", T::Real, {0}, "ambient shade", g}, &O::ambient),
+      bind_parameter(ParameterInfo{"diffuse", "", "", T::Real, {0}, "diffuse shade", g}, &O::diffuse),
+      bind_parameter(ParameterInfo{"line-width", "", "pixels", T::Real, {0, 20, true, false}, "width of edge lines", g},
+                     &O::line_width),
+  };
+  return t;
+}
+
 void RenderOptions::validate() const {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  const char* w = "render options";
-  check_parameter(w, "width", width, {1, 16384});
-  check_parameter(w, "height", height, {1, 16384});
-  check_parameter(w, "supersample", supersample, {1, 4});
-  check_parameter(w, "fov_deg", fov_deg, {0, 120, true, true});
-  check_parameter(w, "margin", margin, {0, 0.45});
-  check_parameter(w, "ambient", ambient, {0, inf});
-  check_parameter(w, "diffuse", diffuse, {0, inf});
-  check_parameter(w, "line_width", line_width, {0, 20, true, false});
+  check_parameters(render_parameters(), *this);
   if (!light.allFinite() || light.norm() == 0) throw InvalidInput("render option light must be a non-zero finite vector");
   if (frame_points.size() != 0 && (frame_points.cols() != 3 || !frame_points.allFinite()))
     throw InvalidInput("render option frame_points must be #P by 3 and finite");

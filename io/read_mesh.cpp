@@ -2,11 +2,14 @@
 // checks), the reader of its format (read_obj.cpp, read_off.cpp, read_ply.cpp, read_stl.cpp),
 // the errors of CGAL and the allocator turned into IoError naming the file, and the polygon
 // soup turned into a Mesh (fan triangulation, degenerate triangles dropped, attributes, notes).
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
+#include <cstdint>
 #include <climits>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -25,22 +28,44 @@ using namespace io_detail;  // the readers' shared pieces (read_common.h)
 
 namespace {
 
+/// Why `path` cannot be opened, from the errno of open(2): each cause in words, so that a
+/// symlink loop or a permission problem does not read as a missing file.
+std::string open_error(const std::string& path, int err) {
+  switch (err) {
+    case ENOENT: return path + ": no such file";
+    case ELOOP: return path + ": too many levels of symbolic links (a symlink loop)";
+    case EACCES: return path + ": permission denied (the file is not readable or a folder on its path not searchable)";
+    case ENAMETOOLONG: return path + ": file name too long (a name over 255 bytes or a path over 4095)";
+    case ENOTDIR: return path + ": a component of the path is not a folder";
+    case EISDIR: return path + ": is a directory, not a mesh file";
+    default: return path + ": cannot open file for reading: " + std::strerror(err);
+  }
+}
+
 std::string read_whole_file(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (!fs::exists(st)) throw IoError(path + ": no such file");
-  if (fs::is_directory(st)) throw IoError(path + ": is a directory, not a mesh file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(path + ": cannot open file for reading: " + std::strerror(errno));
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw IoError(path + ": cannot determine the file size");
-  in.seekg(0, std::ios::beg);
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);  // a FIFO must not block: it is refused below
+  if (fd < 0) throw IoError(open_error(path, errno));
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) throw IoError(path + ": cannot examine the file: " + std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) throw IoError(open_error(path, EISDIR));
+  if (!S_ISREG(st.st_mode)) throw IoError(path + ": not a regular file (a device, FIFO or socket), not a mesh file");
+  const auto size = static_cast<std::uint64_t>(st.st_size);
   // The file, CGAL's polygon soup and the mesh: about four times the size of a binary file.
   check_memory(4.0 * static_cast<double>(size), path + ": reading a " + std::to_string(size) + "-byte file");
   std::string data(static_cast<std::size_t>(size), '\0');
-  if (size > 0 && !in.read(data.data(), size)) throw IoError(path + ": read error");
+  std::size_t done = 0;
+  while (done < data.size()) {
+    const ssize_t n = ::read(fd, data.data() + done, data.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw IoError(path + ": read error: " + std::strerror(errno));
+    if (n == 0) break;
+    done += static_cast<std::size_t>(n);
+  }
+  data.resize(done);  // a file that shrank while being read
   return data;
 }
 

@@ -1,8 +1,11 @@
 #include "msmesh/denoise.h"
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <utility>
+#include <limits>
+#include <vector>
 
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
@@ -10,6 +13,8 @@
 #include "msmesh/mesh.h"
 #include "msmesh/prepared_mesh.h"
 #include "msmesh/topology.h"
+#include "sub_mesh.h"
+#include "union_find.h"
 
 namespace msmesh {
 
@@ -31,6 +36,49 @@ void keep_unreferenced(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, Eigen
     if (!used[static_cast<std::size_t>(i)]) out.row(i) = V.row(i);
 }
 
+/// Components whose mean edge lengths differ by more than this are denoised one by one, each
+/// with its own scale normalisation: together, the small part's systems are below the
+/// solvers' tolerance relative to the large part's ("v-step conjugate gradient did not
+/// converge" on a bolt beside a 1e-5 washer).
+constexpr double kComponentScaleRatio = 100.0;
+
+/// The vertex-connected component of each face, and their number.
+std::vector<int> face_component_labels(const Eigen::MatrixXi& F, Eigen::Index num_vertices, int& count) {
+  detail::UnionFind uf(static_cast<std::size_t>(num_vertices));
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    uf.unite(F(f, 0), F(f, 1));
+    uf.unite(F(f, 1), F(f, 2));
+  }
+  std::vector<int> id(static_cast<std::size_t>(num_vertices), -1), label(static_cast<std::size_t>(F.rows()));
+  count = 0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    int& c = id[static_cast<std::size_t>(uf.find(F(f, 0)))];
+    if (c < 0) c = count++;
+    label[static_cast<std::size_t>(f)] = c;
+  }
+  return label;
+}
+
+/// True when the mean edge lengths of the components differ by more than kComponentScaleRatio.
+bool components_differ_in_scale(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::vector<int>& label,
+                                int count) {
+  std::vector<double> sum(static_cast<std::size_t>(count), 0.0);
+  std::vector<long long> n(static_cast<std::size_t>(count), 0);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      sum[static_cast<std::size_t>(label[f])] += (V.row(F(f, k)) - V.row(F(f, (k + 1) % 3))).norm();
+      ++n[static_cast<std::size_t>(label[f])];
+    }
+  double lo = std::numeric_limits<double>::infinity(), hi = 0;
+  for (int c = 0; c < count; ++c) {
+    const double mean = sum[c] / static_cast<double>(n[c]);
+    if (!(mean > 0)) continue;
+    lo = std::min(lo, mean);
+    hi = std::max(hi, mean);
+  }
+  return hi > kComponentScaleRatio * lo;
+}
+
 }  // namespace
 
 void DenoiseOptions::validate() const {
@@ -47,6 +95,48 @@ double denoise_memory_estimate(Eigen::Index num_vertices, Eigen::Index num_faces
   return per_face * static_cast<double>(num_faces) + kBytesPerVertex * static_cast<double>(num_vertices);
 }
 
+namespace {
+
+/// Denoises each component on its own (its own normalisation) and puts the results together:
+/// positions, normals and edge field in the input's numbering; the reports are those of the
+/// component with the most faces.
+DenoiseResult denoise_components(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::vector<int>& label,
+                                 int count, const DenoiseOptions& o, const ProgressCallback& progress) {
+  DenoiseResult r;
+  r.V = V;
+  r.normals = Eigen::MatrixXd::Zero(F.rows(), 3);
+  const Topology topo = build_topology(F, V.rows());
+  const bool has_field = o.method != DenoiseMethod::Bilateral;
+  if (has_field) r.v = Eigen::VectorXd::Ones(topo.num_edges());
+  std::vector<int> local(static_cast<std::size_t>(V.rows()), -1);
+  std::vector<std::vector<Eigen::Index>> faces_of(static_cast<std::size_t>(count));
+  for (Eigen::Index f = 0; f < F.rows(); ++f) faces_of[static_cast<std::size_t>(label[f])].push_back(f);
+  Eigen::Index largest = -1;
+  for (const std::vector<Eigen::Index>& faces : faces_of) {
+    const detail::SubMesh sub = detail::sub_mesh(V, F, faces, local);
+    const std::vector<int>& global = sub.global;
+    if (!(mean_edge_length(sub.V, sub.F) > 0)) continue;  // all faces degenerate: nothing to scale, kept as it is
+    DenoiseResult rc = denoise(sub.V, sub.F, o, progress);
+    for (std::size_t i = 0; i < global.size(); ++i) r.V.row(global[i]) = rc.V.row(static_cast<Eigen::Index>(i));
+    for (std::size_t i = 0; i < faces.size(); ++i) r.normals.row(faces[i]) = rc.normals.row(static_cast<Eigen::Index>(i));
+    if (has_field) {
+      const Topology tc = build_topology(sub.F, sub.V.rows());
+      for (std::size_t i = 0; i < faces.size(); ++i)
+        for (int k = 0; k < 3; ++k) r.v(topo.face_edges(faces[i], k)) = rc.v(tc.face_edges(static_cast<Eigen::Index>(i), k));
+    }
+    if (largest < 0 || static_cast<Eigen::Index>(faces.size()) > largest) {
+      largest = static_cast<Eigen::Index>(faces.size());
+      r.normal_report = std::move(rc.normal_report);
+      r.vertex_report = std::move(rc.vertex_report);
+    }
+    r.seconds_normals += rc.seconds_normals;
+    r.seconds_vertices += rc.seconds_vertices;
+  }
+  return r;
+}
+
+}  // namespace
+
 DenoiseResult denoise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const DenoiseOptions& o,
                       const ProgressCallback& progress) {
   o.validate();
@@ -60,6 +150,10 @@ DenoiseResult denoise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
     r.V = V;
     return r;
   }
+  int components = 0;
+  const std::vector<int> label = face_component_labels(F, V.rows(), components);
+  if (components > 1 && components_differ_in_scale(V, F, label, components))
+    return denoise_components(V, F, label, components, o, progress);
   if (o.method == DenoiseMethod::Bilateral) {
     r.normals = bilateral_filter_normals(V, F, o.bilateral, progress);
     const auto t1 = clock::now();

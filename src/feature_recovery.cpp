@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "format_number.h"
+#include "sub_mesh.h"
 #include "msmesh/geometry.h"
 #include "msmesh/normal_filter.h"
 #include "msmesh/vertex_update.h"
@@ -368,21 +369,13 @@ void recover_features(Eigen::MatrixXd& V1, Eigen::MatrixXi& F1, Eigen::Index nv0
     for (int k = 0; k < 3 && !in; ++k) in = dist[F1(f, k)] >= 0 && dist[F1(f, k)] < o.context_rings;
     if (in) sub_faces.push_back(static_cast<int>(f));
   }
-  std::vector<int> local(static_cast<size_t>(nv1), -1), global;
-  Eigen::MatrixXi Fs(static_cast<Eigen::Index>(sub_faces.size()), 3);
-  for (size_t s = 0; s < sub_faces.size(); ++s)
-    for (int k = 0; k < 3; ++k) {
-      const int g = F1(sub_faces[s], k);
-      if (local[g] < 0) {
-        local[g] = static_cast<int>(global.size());
-        global.push_back(g);
-      }
-      Fs(static_cast<Eigen::Index>(s), k) = local[g];
-    }
+  std::vector<int> local(static_cast<size_t>(nv1), -1);
+  SubMesh sub = sub_mesh(V1, F1, sub_faces, local);
+  const std::vector<int>& global = sub.global;
+  Eigen::MatrixXi& Fs = sub.F;
+  Eigen::MatrixXd& Vs = sub.V;
   const auto nvs = static_cast<Eigen::Index>(global.size());
   const auto nfs = static_cast<Eigen::Index>(sub_faces.size());
-  Eigen::MatrixXd Vs(nvs, 3);
-  for (Eigen::Index i = 0; i < nvs; ++i) Vs.row(i) = V1.row(global[i]);
 
   // Weights (paper §6.2): α large outside, ≈0 inside (the fill's normals carry no information);
   // β/10 on edges of new faces; ω₃ pinning outside, very small inside.

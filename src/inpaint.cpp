@@ -14,6 +14,7 @@
 #include "hole_fill.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
+#include "msmesh/memory.h"
 #include "msmesh/mesh.h"
 #include "msmesh/parameters.h"
 #include "msmesh/presets.h"
@@ -34,6 +35,20 @@ void InpaintOptions::validate() const {
   for (int i : holes)
     if (i < 0) throw InvalidInput("inpainting: hole index " + std::to_string(i) + " is out of range; valid: >= 0");
   check_parameters(inpaint_parameters(), *this);  // with the normal filter's and vertex update's
+}
+
+double fill_density(const InpaintOptions& o) {
+  return o.density > 0 ? o.density : (o.recover_features ? o.feature_density : std::sqrt(2.0));
+}
+
+double inpaint_memory_estimate(const std::vector<Hole>& holes, const InpaintOptions& o) {
+  // CGAL refines a patch to about the density of the mesh around it times density²: an
+  // equilateral triangle of edge 1/d covers √3/(4d²) squared mean edge lengths. About 1000
+  // bytes per new face were measured for the fill and the feature recovery (as for denoising).
+  const double d = fill_density(o);
+  double faces = 0;
+  for (const Hole& h : holes) faces += h.spanned_area * d * d * (4.0 / std::sqrt(3.0)) + h.edges;
+  return 1000.0 * faces;
 }
 
 InpaintResult inpaint(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const InpaintOptions& o,
@@ -79,12 +94,17 @@ InpaintResult inpaint(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
     }
   }
 
+  std::vector<Hole> chosen;
+  for (int i : selected) chosen.push_back(res.holes[i]);
+  check_memory(inpaint_memory_estimate(chosen, o),
+               "inpainting " + std::to_string(chosen.size()) + " hole(s) at fill density " + num(fill_density(o)));
+
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<FilledHole> filled;
   if (!selected.empty()) {
     std::vector<std::vector<int>> loops;
     for (int i : selected) loops.push_back(res.holes[i].loop);
-    const double density = o.density > 0 ? o.density : (o.recover_features ? o.feature_density : std::sqrt(2.0));
+    const double density = fill_density(o);
     detail::CgalFillResult fill = detail::fill_holes_cgal(V, F, loops, density, true);
     for (size_t s = 0; s < selected.size(); ++s) {
       const detail::CgalHoleOutcome& out = fill.holes[s];

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -14,23 +15,34 @@
 namespace msmesh {
 namespace {
 
-/// MSMESH_MEMORY_LIMIT in bytes, 0 when unset or unreadable.
+/// MSMESH_MEMORY_LIMIT in bytes, 0 when unset. A value that is not a size is an error, not
+/// "no limit": a typo must not silently lift the limit.
 std::uint64_t env_limit() {
   const char* s = std::getenv("MSMESH_MEMORY_LIMIT");
-  if (!s || !*s) return 0;
+  if (!s) return 0;
+  const std::string text = s;
+  auto refuse = [&]() {
+    throw InvalidInput("MSMESH_MEMORY_LIMIT = '" + text +
+                       "' is not a memory size; valid: a number of bytes > 0, optionally followed by K, M or G "
+                       "(e.g. 512M), or unset for no limit");
+  };
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0]))) refuse();
   char* end = nullptr;
   const double v = std::strtod(s, &end);
-  if (!(v > 0)) return 0;
+  if (end == s || !std::isfinite(v) || !(v > 0)) refuse();
   double mult = 1;
-  if (end && *end) {
+  if (*end) {
     switch (std::toupper(static_cast<unsigned char>(*end))) {
       case 'K': mult = 1024.0; break;
       case 'M': mult = 1024.0 * 1024; break;
       case 'G': mult = 1024.0 * 1024 * 1024; break;
-      default: return 0;
+      default: refuse();
     }
+    if (end[1] != '\0' && !((end[1] == 'B' || end[1] == 'b') && end[2] == '\0')) refuse();
   }
-  return static_cast<std::uint64_t>(v * mult);
+  const double bytes = v * mult;
+  if (!(bytes >= 1) || bytes > 1.8e19) refuse();
+  return static_cast<std::uint64_t>(bytes);
 }
 
 std::uint64_t system_available() {

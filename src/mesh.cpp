@@ -27,6 +27,18 @@ void validate_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std
       }
     }
   }
+  // Squared lengths and areas of coordinates this far apart overflow to infinity, and the
+  // errors computed from them to NaN: refused rather than processed into a NaN result.
+  constexpr double kMaxSpan = 1e150;
+  for (Eigen::Index c = 0; c < V.cols() && V.rows() > 0; ++c) {
+    const double span = V.col(c).maxCoeff() - V.col(c).minCoeff();
+    if (!(span <= kMaxSpan)) {
+      std::ostringstream os;
+      os << what << ": the vertex coordinates span " << span << " along axis " << "xyz"[c]
+         << ", more than 1e150: their squared distances overflow; scale the mesh down";
+      throw InvalidInput(os.str());
+    }
+  }
   const Eigen::Index n = V.rows();
   for (Eigen::Index f = 0; f < F.rows(); ++f) {
     for (int k = 0; k < 3; ++k) {

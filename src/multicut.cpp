@@ -10,14 +10,25 @@
 #include <vector>
 
 #include "msmesh/errors.h"
-#include "check.h"
+#include "msmesh/parameters.h"
 
 namespace msmesh {
 
-void MulticutOptions::validate() const {
-  detail::check_non_negative("multicut", "max_local_rounds", max_local_rounds);
-  detail::check_non_negative("multicut", "tolerance", tolerance);
+const ParameterTable<MulticutOptions>& multicut_parameters() {
+  using O = MulticutOptions;
+  using T = ParameterType;
+  static const ParameterTable<O> t = {
+      bind_parameter(ParameterInfo{"max-local-rounds", "", "", T::Integer, {0, 2147483647},
+                                   "maximum rounds of the local search", "multicut"},
+                     &O::max_local_rounds),
+      bind_parameter(ParameterInfo{"tolerance", "", "", T::Real, {0},
+                                   "a move must lower the objective by more than this", "multicut"},
+                     &O::tolerance),
+  };
+  return t;
 }
+
+void MulticutOptions::validate() const { check_parameters(multicut_parameters(), *this); }
 
 namespace {
 

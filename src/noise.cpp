@@ -8,14 +8,32 @@
 
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
-#include "check.h"
+#include "msmesh/parameters.h"
 #include "random.h"
 
 namespace msmesh {
 
+const ParameterTable<NoiseOptions>& noise_parameters() {
+  using O = NoiseOptions;
+  using T = ParameterType;
+  static const ParameterTable<O> t = {
+      // σ beyond a million mean edge lengths only moves vertices out of any meaningful range
+      // (1e308 made every coordinate infinite).
+      bind_parameter(ParameterInfo{"sigma", "σ", "mean edge lengths", T::Real, {0, 1e6},
+                                   "standard deviation of the displacement", "noise"},
+                     &O::sigma),
+      bind_parameter(ParameterInfo{"impulsive", "", "", T::Real, {0, 1},
+                                   "displace only this fraction of the vertices (0: every vertex)", "noise"},
+                     &O::impulsive_fraction),
+      bind_parameter(ParameterInfo{"seed", "", "", T::Integer, {0, kLargestExactInteger},
+                                   "random seed; the same seed gives the same mesh on any machine", "noise"},
+                     &O::seed),
+  };
+  return t;
+}
+
 void NoiseOptions::validate() const {
-  detail::check_non_negative("noise", "sigma", sigma);  // in mean edge lengths
-  detail::check_range("noise", "impulsive_fraction", impulsive_fraction, {0, 1});
+  check_parameters(noise_parameters(), *this);
   if (direction != NoiseDirection::Normal && direction != NoiseDirection::Random)
     throw InvalidInput("noise: direction must be NoiseDirection::Normal or NoiseDirection::Random");
 }
@@ -64,6 +82,9 @@ Eigen::MatrixXd add_noise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, co
       out.row(v) += u * (stddev * rng.gaussian());
     }
   }
+  if (!out.allFinite())
+    throw InvalidInput("noise: sigma = " + std::to_string(options.sigma) +
+                       " mean edge lengths moves vertices beyond the range of finite coordinates");
   return out;
 }
 

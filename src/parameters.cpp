@@ -115,6 +115,9 @@ double parse_parameter(const ParameterInfo& p, const std::string& text, const st
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// Fill densities above this make CGAL's refinement produce about density² times more faces
+// than the mesh around the hole has: 1000 grew past 1.7 GB for two small holes.
+constexpr double kMaxFillDensity = 20;
 constexpr double kGoldenRatio = 1.6180339887498949;  // (1 + √5)/2, the multiplier step's bound (§5.1)
 
 ParameterRange positive() { return {0, kInf, true, false}; }
@@ -138,13 +141,7 @@ ParameterInfo boolean(const char* name, const char* help, const char* group) {
 /// Binds a parameter to one field (double, int or bool) of Options.
 template <class Options, class T>
 Parameter<Options> field(ParameterInfo info, T Options::*m) {
-  return {std::move(info), [m](const Options& o) { return static_cast<double>(o.*m); },
-          [m](Options& o, double x) {
-            if constexpr (std::is_same_v<T, bool>)
-              o.*m = x != 0;
-            else
-              o.*m = static_cast<T>(x);
-          }};
+  return bind_parameter(std::move(info), m);
 }
 
 /// The entries of `inner` applied to the member `m` of Outer, except those named in `skip`.
@@ -267,11 +264,11 @@ const ParameterTable<InpaintOptions>& inpaint_parameters() {
               &O::max_hole_diameter),
         field(boolean("fill-outer", "also fill the outer boundary of an open surface", kInpaint),
               &O::fill_outer_boundary),
-        field(real("density", "", "", non_negative(),
+        field(real("density", "", "", closed(0, kMaxFillDensity),
                    "CGAL density_control_factor of the fill (0: √2 without feature recovery, feature-density with it)",
                    kInpaint),
               &O::density),
-        field(real("feature-density", "", "", positive(), "density of the fill where features are recovered",
+        field(real("feature-density", "", "", left_open(0, kMaxFillDensity), "density of the fill where features are recovered",
                    kInpaint),
               &O::feature_density),
         field(boolean("features", "recover the sharp features running into the holes (off: CGAL's fill-and-fair only)",

@@ -16,16 +16,27 @@
 #include <Eigen/Geometry>
 
 #include "msmesh/errors.h"
+#include "msmesh/parameters.h"
 #include "msmesh/topology.h"
 #include "check.h"
 
 namespace msmesh {
 
-void RepairOptions::validate() const {
-  // Fractions of the mean edge length and of its square.
-  detail::check_range("repair", "weld_tolerance", weld_tolerance, {0, 1});
-  detail::check_range("repair", "zero_area_tolerance", zero_area_tolerance, {0, 1});
+const ParameterTable<RepairOptions>& repair_parameters() {
+  using O = RepairOptions;
+  using T = ParameterType;
+  static const ParameterTable<O> t = {
+      bind_parameter(ParameterInfo{"weld", "", "mean edge lengths", T::Real, {0, 1},
+                                   "merge vertices closer than this (0: exact duplicates only)", "repair"},
+                     &O::weld_tolerance),
+      bind_parameter(ParameterInfo{"zero-area-tolerance", "", "squared mean edge lengths", T::Real, {0, 1},
+                                   "faces of at most this area are degenerate", "repair"},
+                     &O::zero_area_tolerance),
+  };
+  return t;
 }
+
+void RepairOptions::validate() const { check_parameters(repair_parameters(), *this); }
 
 bool RepairReport::changed() const {
   return merged_vertices || degenerate_faces_removed || zero_area_faces_removed || duplicate_faces_removed ||

@@ -735,7 +735,7 @@ TEST(Limits, ParametersOutOfRangeNameTheValidRange) {
     EXPECT_FALSE(fs::exists(out));
   }
   const auto run = run_cli("repair " + in + " -o " + out + " --weld 2");
-  EXPECT_EQ(run.status, 1) << run.out;
+  EXPECT_EQ(run.status, 2) << run.out;  // a usage error, as every number out of range
   EXPECT_NE(run.out.find("[0, 1]"), std::string::npos) << run.out;
   EXPECT_FALSE(fs::exists(out));
 }

@@ -130,6 +130,14 @@ struct InpaintResult {
   double seconds_fill = 0, seconds_features = 0;
 };
 
+/// The refinement density the fill uses: `density`, or when 0 the automatic choice.
+double fill_density(const InpaintOptions& options);
+
+/// Bytes the fill of `holes` needs at the options' density, deliberately low (the new faces
+/// grow with density² × the holes' spanned area); inpaint() checks it with check_memory
+/// (msmesh/memory.h) before any hole is filled.
+double inpaint_memory_estimate(const std::vector<Hole>& holes, const InpaintOptions& options = {});
+
 /// Inpaints (V, F) (#V by 3, #F by 3). A mesh without holes comes back unchanged. Failures of
 /// single holes are reported, not thrown. Throws InvalidInput (bad mesh or options),
 /// SolverError, or Cancelled when `progress` returns false.

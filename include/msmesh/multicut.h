@@ -12,6 +12,7 @@
 #pragma once
 #include <Eigen/Core>
 
+#include "msmesh/parameters.h"
 #include "msmesh/progress.h"
 
 namespace msmesh {
@@ -28,6 +29,9 @@ struct MulticutOptions {
   /// Throws InvalidInput naming the parameter, its value and the valid range.
   void validate() const;
 };
+
+/// max-local-rounds (>= 0) and tolerance (>= 0) with their ranges (parameters.h), used by validate().
+const ParameterTable<MulticutOptions>& multicut_parameters();
 
 struct MulticutResult {
   /// #nodes cluster labels in [0, count), numbered in order of their first node; every

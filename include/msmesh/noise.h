@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "msmesh/mesh.h"
+#include "msmesh/parameters.h"
 
 namespace msmesh {
 
@@ -20,9 +21,13 @@ struct NoiseOptions {
   /// vertices) vertices (at least one, chosen at random) displaced with standard deviation
   /// `sigma` in `direction` (the literature uses a large sigma, e.g. 0.5–1, and Random).
   double impulsive_fraction = 0.0;
-  std::uint64_t seed = 0;
-  void validate() const;  ///< throws InvalidInput naming the parameter and its valid range
+  std::uint64_t seed = 0;  ///< in [0, 2^53] (a value a double holds exactly, as the CLI and Python pass it)
+  void validate() const;  ///< throws InvalidInput naming the parameter and its valid range (noise_parameters())
 };
+
+/// sigma (in [0, 1e6]), impulsive (the fraction, in [0, 1]) and seed: names, ranges and help,
+/// shared by validate(), `msmesh noise` and Python (parameters.h).
+const ParameterTable<NoiseOptions>& noise_parameters();
 
 /// Returns noisy vertex positions (#V by 3); F is unchanged. Reproducible for a seed on any
 /// machine (own generator and Box–Muller, no std:: distribution). σ is scaled by the mean

@@ -10,6 +10,8 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace msmesh {
@@ -80,6 +82,22 @@ struct Parameter {
 
 template <class Options>
 using ParameterTable = std::vector<Parameter<Options>>;
+
+/// A parameter bound to one field (double, bool or an integer type) of Options.
+template <class Options, class T>
+Parameter<Options> bind_parameter(ParameterInfo info, T Options::*m) {
+  return {std::move(info), [m](const Options& o) { return static_cast<double>(o.*m); },
+          [m](Options& o, double x) {
+            if constexpr (std::is_same_v<T, bool>)
+              o.*m = x != 0;
+            else
+              o.*m = static_cast<T>(x);
+          }};
+}
+
+/// The largest whole number a double holds exactly (2^53): the top of integer ranges (seeds)
+/// that a parsed value must not round or wrap beyond.
+constexpr double kLargestExactInteger = 9007199254740992.0;
 
 /// The entry named `name` (CLI or Python spelling), or nullptr.
 template <class Options>

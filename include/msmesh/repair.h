@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "msmesh/mesh.h"
+#include "msmesh/parameters.h"
 
 namespace msmesh {
 
@@ -35,6 +36,10 @@ struct RepairOptions {
   /// Throws InvalidInput naming the parameter and its valid range.
   void validate() const;
 };
+
+/// weld (weld_tolerance) and zero-area-tolerance: names and ranges ([0, 1]) shared by
+/// validate(), `msmesh repair --weld` and Python (parameters.h).
+const ParameterTable<RepairOptions>& repair_parameters();
 
 /// What repair_mesh() did; every count is 0 when there was nothing to do.
 struct RepairReport {

@@ -267,17 +267,17 @@ for _function, _parameters in ((denoise, PARAMETERS), (filter_normals, _NORMAL_P
 def add_noise(V, F, sigma=0.2, direction="normal", impulsive=0.0, seed=0):
     """Seeded noise as in the denoising literature; returns noisy V (#V, 3).
 
-    sigma: standard deviation in units of the mean edge length (>= 0).
+    sigma: standard deviation in units of the mean edge length, in [0, 1e6].
     direction: 'normal' (along vertex normals) or 'random' (uniform directions).
     impulsive: 0 for Gaussian noise on every vertex; in (0, 1] the fraction of vertices hit.
-    seed: non-negative integer; equal seeds give equal noise on any machine (and equal to
+    seed: integer in [0, 2**53]; equal seeds give equal noise on any machine (and equal to
         `msmesh noise --seed`).
     """
     V, F = _checks.mesh(V, F)
     sigma = _checks.real(sigma, "sigma", minimum=0.0)
     _checks.choice(direction, "direction", ("normal", "random"))
     impulsive = _checks.real(impulsive, "impulsive", minimum=0.0)
-    seed = _checks.integer(seed, "seed", minimum=0, maximum=2**64 - 1)
+    seed = _checks.integer(seed, "seed", minimum=0, maximum=2**53)
     return _core.add_noise(V, F, sigma, direction, impulsive, seed)
 
 
@@ -490,7 +490,7 @@ if hasattr(_core, "inpaint"):
         V, F = _checks.mesh(V, F)
         count = _checks.integer(count, "count", minimum=0)
         radius = _checks.real(radius, "radius", minimum=0.0)
-        seed = _checks.integer(seed, "seed", minimum=0, maximum=2**64 - 1)
+        seed = _checks.integer(seed, "seed", minimum=0, maximum=2**53)
         return _core.punch_holes(V, F, count, radius, seed, _checks.boolean(on_features, "on_features"))
 
     __all__ += ["find_holes", "inpaint", "inpaint_errors", "punch_holes", "InpaintOptions", "INPAINT_PARAMETERS"]

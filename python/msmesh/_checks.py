@@ -166,9 +166,16 @@ def path(value, name="path"):
     except TypeError:
         raise InvalidInputError(f"{name}: must be a str or os.PathLike, got {type(value).__name__}") from None
     if isinstance(p, bytes):
-        p = os.fsdecode(p)
+        p = os.fsdecode(p)  # undecodable bytes become lone surrogates, refused below
     if not p:
         raise InvalidInputError(f"{name}: is empty")
+    if "\0" in p:  # as open(): the C++ side would stop at the NUL and use another file
+        raise InvalidInputError(f"{name}: embedded null byte in {p!r}")
+    try:
+        p.encode("utf-8")
+    except UnicodeEncodeError:
+        raise InvalidInputError(f"{name}: {p!r} is not valid UTF-8; msmesh takes UTF-8 file names "
+                                "(rename the file, or pass a str)") from None
     return p
 
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "msmesh/image.h"
+#include "msmesh/parameters.h"
 
 namespace msmesh {
 
@@ -52,6 +53,10 @@ struct RenderOptions {
   /// Throws InvalidInput naming the bad parameter and its value.
   void validate() const;
 };
+
+/// The numeric RenderOptions with their ranges (parameters.h), shared by validate() and the
+/// CLI's --size, --supersample and --line-width.
+const ParameterTable<RenderOptions>& render_parameters();
 
 /// What to draw on the mesh besides its shaded faces.
 struct MeshStyle {
