@@ -25,8 +25,10 @@ inline std::vector<std::string_view> split_lines(std::string_view data) {
   return lines;
 }
 
-inline std::vector<std::string_view> split_words(std::string_view line) {
-  std::vector<std::string_view> words;
+/// Splits `line` into `words` at any whitespace (space, \t, \r, \v, \f, \n); `words` is
+/// reused so that a reader can split every line without allocating.
+inline void split_words(std::string_view line, std::vector<std::string_view>& words) {
+  words.clear();
   std::size_t i = 0;
   while (i < line.size()) {
     while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
@@ -34,6 +36,11 @@ inline std::vector<std::string_view> split_words(std::string_view line) {
     while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
     if (i > start) words.push_back(line.substr(start, i - start));
   }
+}
+
+inline std::vector<std::string_view> split_words(std::string_view line) {
+  std::vector<std::string_view> words;
+  split_words(line, words);
   return words;
 }
 
@@ -52,6 +59,25 @@ inline std::optional<long long> parse_integer(std::string_view word) {
   errno = 0;
   const long long v = std::strtoll(s.c_str(), &end, 10);
   if (s.empty() || end != s.c_str() + s.size() || errno == ERANGE) return std::nullopt;
+  return v;
+}
+
+/// Skips a UTF-8 byte-order mark at the start of a text file (some Windows exporters write one).
+inline std::string_view without_utf8_bom(std::string_view data) {
+  if (data.substr(0, 3) == "\xEF\xBB\xBF") data.remove_prefix(3);
+  return data;
+}
+
+/// Parses a whole word as an integer in [lo, hi]: an optional '-' and decimal digits only
+/// (no '+', point, exponent or spaces), so that "2.9", "1e3" or "99999999999" are refused
+/// rather than read as a different number.
+inline std::optional<long long> parse_strict_integer(std::string_view word, long long lo, long long hi) {
+  std::size_t i = !word.empty() && word[0] == '-' ? 1 : 0;
+  if (i == word.size() || word.size() - i > 19) return std::nullopt;
+  for (std::size_t k = i; k < word.size(); ++k)
+    if (word[k] < '0' || word[k] > '9') return std::nullopt;
+  const auto v = parse_integer(word);
+  if (!v || *v < lo || *v > hi) return std::nullopt;
   return v;
 }
 
