@@ -132,6 +132,14 @@ class MemoryStream : public std::istream {
   MemoryBuf buf_;
 };
 
+/// Appends the triangles of one polygon (`corners` index `points`, in order) to `triangles`,
+/// keeping its orientation: a fan from the first corner when the polygon is convex in its
+/// best-fit (Newell) plane, ear clipping in that plane otherwise, and the fan again when ear
+/// clipping finds no ear (a degenerate or self-intersecting polygon). Always #corners − 2
+/// triangles (none for fewer than 3 corners); they may repeat a vertex. triangulate_polygon.cpp.
+void triangulate_polygon(const std::vector<Point>& points, const std::vector<int>& corners,
+                         std::vector<std::array<int, 3>>& triangles);
+
 // ---------------------------------------------------------------------------------------------
 // One reader per format: parses `data` (the bytes of the file `path`, not empty) into `soup`;
 // throws IoError naming `path` for malformed files (read_mesh.cpp maps CGAL's and the
