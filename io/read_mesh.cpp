@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <system_error>
 
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
@@ -29,6 +30,10 @@ std::string read_whole_file(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
+  // Only a missing file (or folder on the way) is "no such file"; a symlink loop, a folder
+  // that may not be searched or a too-long name say so (with the system's words).
+  if (ec && ec != std::errc::no_such_file_or_directory && ec != std::errc::not_a_directory)
+    throw IoError(path + ": cannot read the file: " + ec.message());
   if (!fs::exists(st)) throw IoError(path + ": no such file");
   if (fs::is_directory(st)) throw IoError(path + ": is a directory, not a mesh file");
   std::ifstream in(path, std::ios::binary);

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <unistd.h>
 #include <string>
 #include <vector>
 
@@ -349,4 +351,46 @@ TEST(ReadExact, OffFaceIndicesMustBeIntegers) {
     EXPECT_NE(what.find("line 6"), std::string::npos) << what;
     EXPECT_NE(what.find("not an integer"), std::string::npos) << what;
   }
+}
+
+// ---- why a file cannot be read (issue 16, class 7, reader side) --------------------------------
+
+TEST(ReadErrors, SymlinkLoopUnsearchableFolderAndLongNameAreNotNoSuchFile) {
+  namespace fs = std::filesystem;
+  TempDir dir;
+  auto message = [](const std::string& path) {
+    try {
+      read_mesh(path);
+    } catch (const IoError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string loop = dir.file("loop.obj");
+  fs::create_symlink(loop, loop);
+  std::string what = message(loop);
+  EXPECT_NE(what.find(loop), std::string::npos) << what;
+  EXPECT_EQ(what.find("no such file"), std::string::npos) << what;
+  EXPECT_NE(what.find("symbolic links"), std::string::npos) << what;
+
+  const std::string long_name = dir.file(std::string(300, 'a') + ".obj");
+  what = message(long_name);
+  EXPECT_EQ(what.find("no such file"), std::string::npos) << what;
+  EXPECT_NE(what.find("too long"), std::string::npos) << what;
+
+  if (geteuid() != 0) {  // root may search any folder
+    const std::string locked = dir.file("locked");
+    fs::create_directory(locked);
+    write_bytes(locked + "/m.obj", kObj);
+    fs::permissions(locked, fs::perms::owner_read);
+    what = message(locked + "/m.obj");
+    fs::permissions(locked, fs::perms::owner_all);
+    EXPECT_EQ(what.find("no such file"), std::string::npos) << what;
+    EXPECT_NE(what.find("ermission denied"), std::string::npos) << what;
+  }
+  // A file that is missing is still "no such file", also below a missing folder or a file.
+  EXPECT_NE(message(dir.file("absent.obj")).find("no such file"), std::string::npos);
+  EXPECT_NE(message(dir.file("nowhere/absent.obj")).find("no such file"), std::string::npos);
+  write_bytes(dir.file("plain"), "x");
+  EXPECT_NE(message(dir.file("plain/absent.obj")).find("no such file"), std::string::npos);
 }
