@@ -25,12 +25,21 @@
 namespace msmesh::io_detail {
 namespace {
 
+/// A PLY scalar type as the body reader needs it (decoded once from its name).
+struct PlyType {
+  std::string name;
+  int bytes = 0;
+  bool is_float = false;
+  long long lo = 0, hi = 0;  ///< range of an integer type
+};
+
 struct PlyProperty {
   std::string name, type;  ///< scalar type, or the item type of a list
   bool is_list = false;
   std::string count_type;
   int size = 0;        ///< bytes of the scalar / of one list item
   int count_size = 0;  ///< bytes of a list's count
+  PlyType item, count;
 };
 
 struct PlyElement {
@@ -59,6 +68,19 @@ int ply_type_size(const std::string& t) {
   return 0;
 }
 bool ply_is_float(const std::string& t) { return t == "float" || t == "float32" || t == "double" || t == "float64"; }
+
+PlyType ply_type(const std::string& t) {
+  PlyType r;
+  r.name = t;
+  r.bytes = ply_type_size(t);
+  r.is_float = ply_is_float(t);
+  const bool is_signed = t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" || t == "int32";
+  if (!r.is_float && r.bytes > 0) {
+    r.hi = is_signed ? (1LL << (8 * r.bytes - 1)) - 1 : (1LL << (8 * r.bytes)) - 1;
+    r.lo = is_signed ? -r.hi - 1 : 0;
+  }
+  return r;
+}
 
 PlyHeader parse_ply_header(const std::string& path, std::string_view data) {
   auto fail = [&path](const std::string& what) { throw IoError(path + ": " + what); };
@@ -120,6 +142,8 @@ PlyHeader parse_ply_header(const std::string& path, std::string_view data) {
         p.size = ply_type_size(p.type);
         if (p.size == 0) fail(where + "unsupported property type " + quote_word(p.type));
       }
+      p.item = ply_type(p.type);
+      p.count = ply_type(p.count_type);
       h.elements.back().properties.push_back(std::move(p));
     }
     // comment, obj_info and unknown keywords are ignored, as CGAL does
@@ -166,14 +190,6 @@ PlyHeader parse_ply_header(const std::string& path, std::string_view data) {
   return h;
 }
 
-/// Range of a PLY integer type (char .. uint32).
-void ply_integer_range(const std::string& t, long long& lo, long long& hi) {
-  const int bytes = ply_type_size(t);
-  const bool is_signed = t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" || t == "int32";
-  hi = is_signed ? (1LL << (8 * bytes - 1)) - 1 : (1LL << (8 * bytes)) - 1;
-  lo = is_signed ? -hi - 1 : 0;
-}
-
 /// Reads the values of a PLY body one at a time, each as its declared type: binary values
 /// from their bytes in the file's byte order, ascii words through read_text.h's strict
 /// parsers (an integer type takes a whole integer in its range, so 300 is no uchar and 2.9 no
@@ -194,32 +210,30 @@ class PlyBodyReader {
     throw IoError(path_ + ": " + where + ": " + what);
   }
 
-  /// A value of integer type `type` (list counts and indices, colours, other properties).
-  long long integer(const std::string& type, const std::string& name) {
-    if (ply_is_float(type)) return static_cast<long long>(real(type, name));
-    long long lo, hi;
-    ply_integer_range(type, lo, hi);
+  /// A value of integer type `t` (list counts and indices, colours, other properties).
+  long long integer(const PlyType& t, const std::string& name) {
+    if (t.is_float) return static_cast<long long>(real(t, name));
     if (format_ == PlyHeader::Ascii) {
       const std::string_view w = word();
-      const auto v = parse_strict_integer(w, lo, hi);
-      if (!v) fail(quote_word(name) + " value " + quote_word(w) + " is not a " + type + " (an integer in " +
-                   std::to_string(lo) + ".." + std::to_string(hi) + ")");
+      const auto v = parse_strict_integer(w, t.lo, t.hi);
+      if (!v) fail(quote_word(name) + " value " + quote_word(w) + " is not a " + t.name + " (an integer in " +
+                   std::to_string(t.lo) + ".." + std::to_string(t.hi) + ")");
       return *v;
     }
-    const std::uint64_t u = bytes(ply_type_size(type));
-    const int shift = 64 - 8 * ply_type_size(type);
-    return lo < 0 ? static_cast<std::int64_t>(u << shift) >> shift : static_cast<long long>(u);
+    const std::uint64_t u = bytes(t.bytes);
+    const int shift = 64 - 8 * t.bytes;
+    return t.lo < 0 ? static_cast<std::int64_t>(u << shift) >> shift : static_cast<long long>(u);
   }
 
   /// A value of any type as a double.
-  double real(const std::string& type, const std::string& name) {
-    if (!ply_is_float(type)) return static_cast<double>(integer(type, name));
-    const bool single = type == "float" || type == "float32";
+  double real(const PlyType& t, const std::string& name) {
+    if (!t.is_float) return static_cast<double>(integer(t, name));
+    const bool single = t.bytes == 4;
     if (format_ == PlyHeader::Ascii) {
       const std::string_view w = word();
-      const auto x = parse_double(w);
+      const auto x = single ? parse_float(w) : parse_double(w);
       if (!x) fail("cannot read " + quote_word(name) + " value " + quote_word(w));
-      return single ? static_cast<double>(std::strtof(std::string(w).c_str(), nullptr)) : *x;
+      return *x;
     }
     const std::uint64_t u = bytes(single ? 4 : 8);
     if (single) {
@@ -235,7 +249,7 @@ class PlyBodyReader {
 
   /// A list's count, checked against the bytes that remain (each item needs at least one).
   std::size_t list_count(const PlyProperty& p) {
-    const long long n = integer(p.count_type, p.name);
+    const long long n = integer(p.count, p.name);
     const std::size_t item = format_ == PlyHeader::Ascii ? 2 : static_cast<std::size_t>(p.size);
     if (n < 0 || static_cast<unsigned long long>(n) > (data_.size() - pos_) / item + 1)
       fail("list count " + std::to_string(n) + " exceeds the rest of the file (corrupt or truncated)");
@@ -327,17 +341,17 @@ void read_ply(const std::string& path, std::string_view data, Soup& soup) {
             Polygon& poly = soup.polygons.emplace_back();
             poly.resize(n);
             // A negative index wraps to a huge one here; soup_to_mesh reports it signed.
-            for (std::size_t k = 0; k < n; ++k) poly[k] = static_cast<std::size_t>(in.integer(prop.type, prop.name));
+            for (std::size_t k = 0; k < n; ++k) poly[k] = static_cast<std::size_t>(in.integer(prop.item, prop.name));
           } else {
-            for (std::size_t k = 0; k < n; ++k) in.real(prop.type, prop.name);
+            for (std::size_t k = 0; k < n; ++k) in.real(prop.item, prop.name);
           }
           continue;
         }
         if (pi == col[0] || pi == col[1] || pi == col[2]) {
-          rgb[pi == col[0] ? 0 : pi == col[1] ? 1 : 2] = static_cast<int>(in.integer(prop.type, prop.name));
+          rgb[pi == col[0] ? 0 : pi == col[1] ? 1 : 2] = static_cast<int>(in.integer(prop.item, prop.name));
           continue;
         }
-        const double v = in.real(prop.type, prop.name);
+        const double v = in.real(prop.item, prop.name);
         if (pi == x) value[0] = v;
         if (pi == y) value[1] = v;
         if (pi == z) value[2] = v;

@@ -44,13 +44,33 @@ inline std::vector<std::string_view> split_words(std::string_view line) {
   return words;
 }
 
-/// Parses a whole word as a number (strtod semantics: also nan/inf).
-inline std::optional<double> parse_double(std::string_view word) {
-  const std::string s(word);
+/// Parses a whole word as a number with `strto` (strtod semantics: also nan/inf), copying
+/// short words to the stack rather than allocating.
+template <typename T>
+std::optional<T> parse_number(std::string_view word, T (*strto)(const char*, char**)) {
+  if (word.empty()) return std::nullopt;
+  char buf[64];
+  std::string heap;
+  const char* s = buf;
+  if (word.size() < sizeof buf) {
+    word.copy(buf, word.size());
+    buf[word.size()] = '\0';
+  } else {
+    heap.assign(word);
+    s = heap.c_str();
+  }
   char* end = nullptr;
-  const double v = std::strtod(s.c_str(), &end);
-  if (s.empty() || end != s.c_str() + s.size()) return std::nullopt;
+  const T v = strto(s, &end);
+  if (end != s + word.size()) return std::nullopt;
   return v;
+}
+
+inline std::optional<double> parse_double(std::string_view word) { return parse_number<double>(word, std::strtod); }
+
+/// As parse_double, rounded to float first (as `istream >> float` reads a PLY float).
+inline std::optional<double> parse_float(std::string_view word) {
+  const auto x = parse_number<float>(word, std::strtof);
+  return x ? std::optional<double>(*x) : std::nullopt;
 }
 
 inline std::optional<long long> parse_integer(std::string_view word) {
