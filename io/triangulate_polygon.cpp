@@ -87,9 +87,10 @@ void triangulate_polygon(const std::vector<Point>& points, const std::vector<int
   const double eps = 1e-12 * extent * extent;
   if (is_convex(q, eps)) return fan(corners, triangles);
 
-  // Ear clipping. Walking forwards from corner 1 and clipping where possible gives the fan
-  // from corner 0 on convex stretches. An ear is a strictly convex corner whose triangle holds
-  // no other remaining corner (on its edges included), except copies of its own corners.
+  // Ear clipping. An ear is a strictly convex corner whose triangle holds no other remaining
+  // corner (on its edges included), except copies of its own corners. After a clip the walk
+  // steps back one corner, whose ear status may have changed (so a polygon of n corners
+  // usually takes O(n) ear tests of O(n) each).
   std::vector<std::size_t> left(n);
   for (std::size_t k = 0; k < n; ++k) left[k] = k;
   auto same = [&](std::size_t r, std::size_t s) { return q[r].x == q[s].x && q[r].y == q[s].y; };
@@ -112,6 +113,7 @@ void triangulate_polygon(const std::vector<Point>& points, const std::vector<int
       triangles.push_back({corners[a], corners[b], corners[c]});
       left.erase(left.begin() + static_cast<std::ptrdiff_t>(k));
       misses = 0;
+      k = k == 0 ? left.size() - 1 : k - 1;
     } else if (++misses > m) {
       // No ear left (degenerate: self-intersecting or collinear): the fan it always was.
       triangles.resize(first);
