@@ -18,6 +18,13 @@ COLORS = [(255, 0, 0), (0, 255, 0), (0, 0, 255), (200, 200, 10)]
 # A pentagon and a triangle: polygons of more than four corners.
 PENT_V = [(0, 0, 0), (1, 0, 0), (1.3, 0.9, 0), (0.5, 1.5, 0), (-0.3, 0.9, 0), (0.5, 0.5, 1)]
 PENT_F = [(0, 1, 2, 3, 4), (0, 1, 5)]
+# Non-convex polygons (ear-clipped on reading): an L-shaped face starting at its reflex corner
+# and a ten-pointed star, in a tilted plane.
+L_V = [(1, 1, 0.5), (1, 3, 1.5), (0, 3, 1.5), (0, 0, 0), (2, 0, 0), (2, 1, 0.5)]
+STAR_V = [(round((1.0 if k % 2 == 0 else 0.4) * c, 6), round((1.0 if k % 2 == 0 else 0.4) * s_, 6), 0.0)
+          for k, (c, s_) in enumerate((__import__("math").cos(k * 3.141592653589793 / 5),
+                                       __import__("math").sin(k * 3.141592653589793 / 5)) for k in range(10))]
+BOM = "\ufeff"
 
 
 def num(x):
@@ -54,6 +61,11 @@ def obj_files():
                                     "l 1 2 3\n")
     out["tet_crlf_exponents.obj"] = "".join(f"v {v[0]}e0 {v[1]}.0E+00 {v[2] * 0.5:.3e}\r\n" for v in TET_V) + "".join(
         "f " + " ".join(str(i + 1) for i in f) + "\r\n" for f in TET_F)
+    # Tabs and other whitespace between every word, after a UTF-8 byte-order mark.
+    out["tet_tabs_bom.obj"] = BOM + "".join(f"v\t{v[0]}\t {v[1]}\v{v[2]}\n" for v in TET_V) + "".join(
+        "f\t" + "\t".join(str(i + 1) for i in f) + " \f\n" for f in TET_F)
+    out["l_shape_star.obj"] = ("".join(f"v {vline(v)}\n" for v in L_V + STAR_V) + "f 1 2 3 4 5 6\n" +
+                               "f " + " ".join(str(-10 + k) for k in range(10)) + "\n")
     return out
 
 
@@ -77,6 +89,9 @@ def off_files():
         "4 " + " ".join(map(str, q)) + "\n" for q in CUBE_Q)
     out["pentagon.off"] = "OFF\n6 2 0\n" + "".join(vline(v) + "\n" for v in PENT_V) + "".join(
         f"{len(f)} " + " ".join(map(str, f)) + "\n" for f in PENT_F)
+    out["tet_bom.off"] = BOM + out["tet.off"]
+    out["l_shape_star.off"] = (f"OFF\n{len(L_V) + len(STAR_V)} 2 0\n" + "".join(vline(v) + "\n" for v in L_V + STAR_V) +
+                               "6 0 1 2 3 4 5\n10 " + " ".join(str(6 + k) for k in range(10)) + "\n")
     b = b"OFF BINARY\n" + struct.pack(">iii", 4, 4, 6)
     for v in TET_V:
         b += struct.pack(">fff", *v)
@@ -165,6 +180,13 @@ def ply_files():
                                         [(7,) + v + (3, -1) for v in tv],
                                         [("int", "id")] + idx + [("list", "uchar", "float", "texcoord")],
                                         [(i, f, (0.0, 0.5, 1.0, 0.5, 0.0, 1.0)) for i, f in enumerate(TET_F)])
+    # Face lists of every integer type; a BOM before "ply"; non-convex polygons.
+    for fmt, tag in (("ascii", "ascii"), ("binary_little_endian", "le"), ("binary_big_endian", "be")):
+        for count, item in (("uchar", "uchar"), ("ushort", "ushort"), ("char", "short")):
+            out[f"tet_{tag}_{count}_{item}_indices.ply"] = ply(fmt, xyz_f, tv, [("list", count, item, "vertex_indices")], tf)
+    out["tet_bom_ascii.ply"] = BOM.encode() + out["tet_ascii.ply"]
+    lv = [tuple(float(c) for c in v) for v in L_V + STAR_V]
+    out["l_shape_star_le.ply"] = ply("binary_little_endian", xyz_d, lv, idx, [(tuple(range(6)),), (tuple(range(6, 16)),)])
     return out
 
 
@@ -198,6 +220,7 @@ def stl_files():
     return {
         "tet_ascii.stl": stl_ascii(TET_V, TET_F),
         "tet_ascii_crlf_noname.stl": stl_ascii(TET_V, TET_F, name="", nl="\r\n"),
+        "tet_ascii_bom.stl": BOM + stl_ascii(TET_V, TET_F),
         "cube_ascii_floats.stl": stl_ascii([tuple(0.5 * c + 0.125 for c in v) for v in CUBE_V], cube_t, "cube"),
         "tet_binary.stl": stl_binary(TET_V, TET_F),
         "tet_binary_solid_header.stl": stl_binary(TET_V, TET_F, header=b"solid tet (binary, exported by a tool)"),

@@ -1,13 +1,14 @@
-// Shared pieces of the mesh readers (internal to msmesh_io): the polygon soup CGAL's readers
-// fill, the file in memory as a stream, and one entry point per format (read_obj.cpp,
-// read_off.cpp, read_ply.cpp, read_stl.cpp); read_mesh.cpp dispatches to them by format and
-// turns the soup into a Mesh.
+// Shared pieces of the mesh readers (internal to msmesh_io): the polygon soup the readers
+// fill, the file in memory as a stream, polygon triangulation, and one entry point per format
+// (read_obj.cpp, read_off.cpp, read_ply.cpp, read_stl.cpp); read_mesh.cpp dispatches to them
+// by format and turns the soup into a Mesh.
 //
-// CGAL's readers trust their input more than a command-line tool can, so each format is
-// checked before CGAL sees it (found by reading CGAL 5.5's readers and by fuzzing them under
-// AddressSanitizer); what each reader guards against is listed at the top of its file. The
-// read_*.cpp files are the only translation units that include CGAL's I/O headers. The whole
-// file is read into memory once; CGAL parses it from there.
+// OBJ and PLY are parsed by our own code through read_text.h's tokenizer and strict number
+// parsers. OFF and STL go through CGAL's readers, which trust their input more than a
+// command-line tool can, so each is checked before CGAL sees it (found by reading CGAL 5.5's
+// readers and by fuzzing them under AddressSanitizer); what each reader guards against is
+// listed at the top of its file. read_off.cpp and read_stl.cpp are the only translation units
+// that include CGAL's I/O headers. The whole file is read into memory once.
 #pragma once
 #include <CGAL/IO/Color.h>
 #include <CGAL/Simple_cartesian.h>
@@ -42,7 +43,7 @@ struct PolygonTooLarge {
 /// Upper bound on the corners of one polygon while a file is read (its size in bytes).
 inline thread_local std::size_t t_polygon_limit = 0;
 
-/// A polygon for CGAL's readers. Up to four corners are stored inline (no allocation per
+/// A polygon of the soup. Up to four corners are stored inline (no allocation per
 /// face); longer polygons spill to the heap. CGAL sizes polygons from counts in the file (OFF)
 /// before reading the indices, so resize refuses counts that cannot be genuine.
 class Polygon {
@@ -92,8 +93,7 @@ struct Soup {
   std::vector<Point> points;
   std::vector<Polygon> polygons;
   std::vector<CGAL::IO::Color> vertex_colors;
-  // Per-vertex attributes CGAL's soup readers drop, read by read_obj_attributes and
-  // read_ply_attributes (empty when absent or not per-vertex).
+  // Per-vertex attributes (empty when absent or not per-vertex).
   std::vector<std::array<double, 3>> rgb;      ///< OBJ "v x y z r g b" colours in [0,1]
   std::vector<std::array<double, 2>> uv;
   std::vector<std::array<double, 3>> normals;
@@ -131,6 +131,14 @@ class MemoryStream : public std::istream {
  private:
   MemoryBuf buf_;
 };
+
+/// Appends the triangles of one polygon (`corners` index `points`, in order) to `triangles`,
+/// keeping its orientation: a fan from the first corner when the polygon is convex in its
+/// best-fit (Newell) plane, ear clipping in that plane otherwise, and the fan again when ear
+/// clipping finds no ear (a degenerate or self-intersecting polygon). Always #corners − 2
+/// triangles (none for fewer than 3 corners); they may repeat a vertex. triangulate_polygon.cpp.
+void triangulate_polygon(const std::vector<Point>& points, const std::vector<int>& corners,
+                         std::vector<std::array<int, 3>>& triangles);
 
 // ---------------------------------------------------------------------------------------------
 // One reader per format: parses `data` (the bytes of the file `path`, not empty) into `soup`;

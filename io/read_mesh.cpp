@@ -1,7 +1,7 @@
 // read_mesh and read_mesh_from_memory: the file read into memory (existence, size and memory
 // checks), the reader of its format (read_obj.cpp, read_off.cpp, read_ply.cpp, read_stl.cpp),
 // the errors of CGAL and the allocator turned into IoError naming the file, and the polygon
-// soup turned into a Mesh (fan triangulation, degenerate triangles dropped, attributes, notes).
+// soup turned into a Mesh (polygons triangulated, degenerate triangles dropped, attributes, notes).
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <system_error>
 
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
@@ -85,22 +86,28 @@ Mesh soup_to_mesh(const std::string& path, const Soup& soup, Eigen::Index* dropp
   for (std::size_t p = 0; p < soup.polygons.size(); ++p) {
     const Polygon& poly = soup.polygons[p];
     for (std::size_t idx : poly)
-      if (idx >= nv)
-        throw IoError(path + ": face " + std::to_string(p) + " refers to vertex " + std::to_string(idx) +
-                      " (0-based), out of range [0, " + std::to_string(nv) + ")");
+      if (idx >= nv)  // a negative index of a binary file arrives wrapped: print it signed
+        throw IoError(path + ": face " + std::to_string(p) + " refers to vertex " +
+                      std::to_string(static_cast<long long>(idx)) + " (0-based), out of range [0, " +
+                      std::to_string(nv) + ")");
     if (poly.size() >= 3) triangles += poly.size() - 2;
   }
-  // Polygons are fan-triangulated; triangles repeating a vertex are dropped.
+  // Polygons are triangulated (a fan when convex, ear clipping otherwise); triangles
+  // repeating a vertex are dropped.
   Eigen::Index dropped = 0;
   mesh.F.resize(static_cast<Eigen::Index>(triangles), 3);
   Eigen::Index f = 0;
+  std::vector<int> corners;
+  std::vector<std::array<int, 3>> tris;
   for (const Polygon& poly : soup.polygons) {
     if (poly.size() < 3) {
       ++dropped;
       continue;
     }
-    for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
-      const int a = static_cast<int>(poly[0]), b = static_cast<int>(poly[k]), c = static_cast<int>(poly[k + 1]);
+    corners.assign(poly.begin(), poly.end());
+    tris.clear();
+    triangulate_polygon(soup.points, corners, tris);
+    for (const auto& [a, b, c] : tris) {
       if (a == b || b == c || a == c) {
         ++dropped;
         continue;

@@ -1,11 +1,17 @@
-// OBJ reader (CGAL's read_OBJ behind guards). CGAL refuses any record it does not know (e.g.
-// 'l') and lets index #V+1 and 0 through its own range check; it only says "false", so
-// failures are diagnosed here. Vertex colours, texture coordinates and normals, which CGAL's
-// soup reader drops, are read here too.
-#include <CGAL/IO/OBJ.h>
-
+// OBJ reader (our own, one pass over the lines). Every number goes through read_text.h's
+// strict parsers: a coordinate is a whole decimal word, a face corner is `v`, `v/vt`, `v//vn`
+// or `v/vt/vn` with integer indices (1-based, negative = relative to the records read so far),
+// and anything else ("2.9", "1e3", "+1", an index beyond int, 0) is refused naming the line and
+// the word. Any whitespace separates words (tabs, \r, \v, \f as spaces); a UTF-8 byte-order
+// mark is skipped; '#' starts a comment. Records that are not part of a surface ('l', 'p',
+// 'usemtl', unknown keywords, ...) are skipped. Vertex colours ("v x y z r g b"), texture
+// coordinates and normals are read too.
+//
+// Until this reader, CGAL's read_OBJ was used: it split corners on ' ' only (tabs lost faces),
+// read "2.9" as 2, ended a face at an overflowing index and refused the BOM's first line.
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -18,155 +24,132 @@
 namespace msmesh::io_detail {
 namespace {
 
-bool obj_keyword_known_to_cgal(std::string_view s) {
-  static const char* const known[] = {
-      "v",     "vt",    "vn",     "f",        "vp",         "bevel",      "lod",      "ctech",   "c_interp",
-      "usemap", "usemtl", "stech", "d_interp", "mtllib",     "shadow_obj", "trace_obj", "o",      "g",
-      "s",     "p",     "cstype", "deg",      "step",       "bmat",       "con",      "curv",    "curv2",
-      "surf",  "parm",  "trim",   "hole",     "scrv",       "sp",         "end",      "surf_1",  "q0_1",
-      "q1_1",  "curv2d_1", "surf_2", "q0_2",  "q1_2",       "curv2d_2",   "bsp",      "bzp",     "cdc",
-      "cdp",   "res"};
-  for (const char* k : known)
-    if (s == k) return true;
-  return !s.empty() && s.front() == '#';
+/// One face corner's indices as written (0 = absent).
+struct ObjCorner {
+  long long v = 0, vt = 0, vn = 0;
+};
+
+/// Parses a corner word `v`, `v/vt`, `v//vn` or `v/vt/vn`; returns the problem, or "".
+std::string parse_obj_corner(std::string_view word, ObjCorner& c) {
+  std::string_view part[3];
+  int parts = 0;
+  for (std::size_t start = 0;;) {
+    const std::size_t slash = word.find('/', start);
+    if (parts == 3) return "too many '/'";
+    part[parts++] = word.substr(start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
+    if (slash == std::string_view::npos) break;
+    start = slash + 1;
+  }
+  // "1/" and "1//" leave an empty last part; only the middle one (vt in "1//3") may be empty.
+  if (part[parts - 1].empty() && parts > 1) return "an empty index after '/'";
+  long long* const out[3] = {&c.v, &c.vt, &c.vn};
+  for (int k = 0; k < parts; ++k) {
+    if (k == 1 && parts == 3 && part[k].empty()) continue;
+    const std::string_view p = part[k];
+    const auto x = parse_strict_integer(p, INT_MIN + 1LL, INT_MAX);
+    if (!x) {
+      if (parse_strict_integer(p, LLONG_MIN + 1, LLONG_MAX) || (p.size() > 19 && parse_double(p)))
+        return "index " + quote_word(p) + " does not fit in an int";
+      return "an index must be an integer";
+    }
+    if (*x == 0) return "index 0 (OBJ indices are 1-based; negative ones count back from the last record)";
+    *out[k] = *x;
+  }
+  return "";
 }
 
-/// Why CGAL's OBJ reader refused the file (it only says false).
-std::string diagnose_obj(std::string_view data) {
+/// 1-based or negative (relative to `count` records so far) to 0-based.
+long long resolve_obj_index(long long idx, std::size_t count) {
+  return idx > 0 ? idx - 1 : static_cast<long long>(count) + idx;
+}
+
+}  // namespace
+
+void read_obj(const std::string& path, std::string_view data, Soup& soup) {
+  data = without_utf8_bom(data);
   const auto lines = split_lines(data);
-  long long vertices = 0, faces = 0;
-  for (std::size_t n = 0; n < lines.size(); ++n) {
-    const auto w = split_words(lines[n]);
-    if (w.empty()) continue;
-    const std::string where = "line " + std::to_string(n + 1) + ": ";
-    if (w[0] == "v") {
-      if (w.size() < 4) return where + "vertex record with fewer than 3 coordinates";
-      for (int c = 1; c <= 3; ++c) {
-        const auto x = parse_double(w[c]);
-        if (!x) return where + "cannot read vertex coordinate " + quote_word(w[c]);
-        if (!std::isfinite(*x)) return where + "non-finite vertex coordinate " + quote_word(w[c]);
-      }
-      ++vertices;
-    } else if (w[0] == "f") {
-      ++faces;
-    } else if (!obj_keyword_known_to_cgal(w[0])) {
-      return where + "unsupported OBJ record " + quote_word(w[0]) +
-             " (CGAL's OBJ reader accepts v, vt, vn, f, o, g, s, usemtl, mtllib and free-form records)";
-    }
-  }
-  if (vertices == 0) return "no vertices ('v' records)";
-  if (faces == 0) return "no faces ('f' records)";
-  // Face indices: CGAL rejects those beyond the vertex count (1-based, negative = relative).
-  long long seen = 0;
-  for (std::size_t n = 0; n < lines.size(); ++n) {
-    const auto w = split_words(lines[n]);
-    if (w.empty()) continue;
-    if (w[0] == "v") ++seen;
-    if (w[0] != "f") continue;
-    for (std::size_t k = 1; k < w.size(); ++k) {
-      const auto idx = parse_integer(w[k].substr(0, w[k].find('/')));
-      if (!idx) break;
-      if (*idx > vertices || *idx == 0 || *idx < -seen)
-        return "line " + std::to_string(n + 1) + ": face refers to vertex " + std::to_string(*idx) +
-               ", but the file has " + std::to_string(vertices) + " vertices (indices are 1-based)";
-    }
-  }
-  return "malformed OBJ file (CGAL's reader failed)";
-}
-
-/// `data` without the lines whose record CGAL's OBJ reader refuses (e.g. 'l' polylines).
-std::string without_unknown_obj_records(std::string_view data) {
-  std::string kept;
-  kept.reserve(data.size());
-  for (const std::string_view line : split_lines(data)) {
-    const auto w = split_words(line);
-    if (w.empty() || obj_keyword_known_to_cgal(w[0])) kept.append(line).push_back('\n');
-  }
-  return kept;
-}
-
-/// Vertex colours ("v x y z r g b"), texture coordinates and normals of an OBJ file as
-/// per-vertex arrays. Per-corner values ("f v/vt/vn") become per-vertex when every corner of a
-/// vertex names the same value; otherwise (seams) they are dropped and noted.
-void read_obj_attributes(std::string_view data, Soup& soup) {
-  const std::size_t nv = soup.points.size();
+  auto fail = [&](std::size_t n, const std::string& what) {
+    throw IoError(path + ": line " + std::to_string(n + 1) + ": " + what);
+  };
   std::vector<std::array<double, 3>> rgb, vn;
   std::vector<std::array<double, 2>> vt;
   bool all_rgb = true;
-  std::size_t vertices = 0;
-  // Per vertex: the vt / vn index its corners name (-1 none yet, -2 conflicting).
-  std::vector<long long> vertex_vt(nv, -1), vertex_vn(nv, -1);
-  bool corners_without_vt = false, corners_without_vn = false, any_vt = false, any_vn = false;
-  auto resolve = [](long long idx, std::size_t count) -> long long {  // 1-based / negative -> 0-based
-    if (idx > 0) return idx - 1;
-    if (idx < 0) return static_cast<long long>(count) + idx;
-    return -1;
+  // Per corner, in polygon order: the 0-based vt / vn index (-1 none), filled lazily once the
+  // first corner with one appears.
+  std::vector<long long> corner_vt, corner_vn;
+  std::size_t corners = 0;
+  long long max_index = -1;  // largest 0-based vertex index of a positive (forward) reference
+  std::size_t max_index_line = 0;
+  std::vector<std::string_view> w;
+  auto number = [&](std::size_t n, std::string_view word, const char* what) {
+    const auto x = parse_double(word);
+    if (!x) fail(n, std::string("cannot read ") + what + " " + quote_word(word));
+    return *x;
   };
-  auto assign = [](std::vector<long long>& slot, std::size_t v, long long idx) {
-    if (slot[v] == -1) slot[v] = idx;
-    else if (slot[v] != idx) slot[v] = -2;
-  };
-  for (const std::string_view line : split_lines(data)) {
-    const auto w = split_words(line);
+  for (std::size_t n = 0; n < lines.size(); ++n) {
+    split_words(lines[n], w);
+    const auto comment = std::find_if(w.begin(), w.end(), [](std::string_view s) { return s.front() == '#'; });
+    w.erase(comment, w.end());
     if (w.empty()) continue;
     if (w[0] == "v") {
-      ++vertices;
-      if (w.size() >= 7) {
-        std::array<double, 3> c{};
+      if (w.size() < 4) fail(n, "vertex record with fewer than 3 coordinates");
+      double p[3];
+      for (int c = 0; c < 3; ++c) {
+        p[c] = number(n, w[1 + c], "vertex coordinate");
+        if (!std::isfinite(p[c])) fail(n, "non-finite vertex coordinate " + quote_word(w[1 + c]));
+      }
+      soup.points.emplace_back(p[0], p[1], p[2]);
+      if (w.size() >= 7 && all_rgb) {
+        std::array<double, 3> col{};
         for (int k = 0; k < 3; ++k) {
           const auto x = parse_double(w[4 + k]);
           if (!x || !std::isfinite(*x)) all_rgb = false;
-          c[k] = x ? *x : 0.0;
+          col[k] = x ? *x : 0.0;
         }
-        rgb.push_back(c);
+        rgb.push_back(col);
       } else {
         all_rgb = false;
       }
-    } else if (w[0] == "vt" && w.size() >= 2) {
-      const auto u = parse_double(w[1]);
-      const auto v = w.size() >= 3 ? parse_double(w[2]) : std::optional<double>(0.0);
-      vt.push_back({u ? *u : 0.0, v ? *v : 0.0});
-    } else if (w[0] == "vn" && w.size() >= 4) {
-      std::array<double, 3> n{};
-      for (int k = 0; k < 3; ++k) {
-        const auto x = parse_double(w[1 + k]);
-        n[k] = x ? *x : 0.0;
-      }
-      vn.push_back(n);
+    } else if (w[0] == "vt") {
+      if (w.size() < 2) fail(n, "texture coordinate record without a value");
+      vt.push_back({number(n, w[1], "texture coordinate"), w.size() >= 3 ? number(n, w[2], "texture coordinate") : 0.0});
+    } else if (w[0] == "vn") {
+      if (w.size() < 4) fail(n, "normal record with fewer than 3 components");
+      vn.push_back({number(n, w[1], "normal component"), number(n, w[2], "normal component"),
+                    number(n, w[3], "normal component")});
     } else if (w[0] == "f") {
-      for (std::size_t k = 1; k < w.size(); ++k) {
-        const std::string_view corner = w[k];
-        const std::size_t s1 = corner.find('/');
-        const auto vi = parse_integer(corner.substr(0, s1));
-        if (!vi) continue;
-        const long long v = resolve(*vi, vertices);
-        if (v < 0 || static_cast<std::size_t>(v) >= nv) continue;
-        std::string_view t, n;
-        if (s1 != std::string_view::npos) {
-          const std::size_t s2 = corner.find('/', s1 + 1);
-          t = corner.substr(s1 + 1, s2 == std::string_view::npos ? std::string_view::npos : s2 - s1 - 1);
-          if (s2 != std::string_view::npos) n = corner.substr(s2 + 1);
-        }
-        const auto ti = t.empty() ? std::nullopt : parse_integer(t);
-        const auto ni = n.empty() ? std::nullopt : parse_integer(n);
-        if (ti) {
-          any_vt = true;
-          const long long r = resolve(*ti, vt.size());
-          assign(vertex_vt, static_cast<std::size_t>(v), r >= 0 && static_cast<std::size_t>(r) < vt.size() ? r : -2);
-        } else {
-          corners_without_vt = true;
-        }
-        if (ni) {
-          any_vn = true;
-          const long long r = resolve(*ni, vn.size());
-          assign(vertex_vn, static_cast<std::size_t>(v), r >= 0 && static_cast<std::size_t>(r) < vn.size() ? r : -2);
-        } else {
-          corners_without_vn = true;
-        }
+      Polygon& poly = soup.polygons.emplace_back();
+      for (std::size_t k = 1; k < w.size(); ++k, ++corners) {
+        ObjCorner c;
+        const std::string problem = parse_obj_corner(w[k], c);
+        if (!problem.empty()) fail(n, "bad face corner " + quote_word(w[k]) + ": " + problem);
+        const long long v = resolve_obj_index(c.v, soup.points.size());
+        if (v < 0)
+          fail(n, "face refers to vertex " + std::to_string(c.v) + ", but only " + std::to_string(soup.points.size()) +
+                      " vertices precede it");
+        if (c.v > 0 && v > max_index) max_index = v, max_index_line = n;
+        poly.push_back(static_cast<std::size_t>(v));
+        auto attribute = [&](std::vector<long long>& slots, long long idx, std::size_t count) {
+          if (idx == 0 && slots.empty()) return;
+          slots.resize(corners, -1);
+          const long long r = idx == 0 ? -1 : resolve_obj_index(idx, count);
+          slots.push_back(idx != 0 && r < 0 ? -2 : r);  // -2: before the first record
+        };
+        attribute(corner_vt, c.vt, vt.size());
+        attribute(corner_vn, c.vn, vn.size());
       }
     }
+    // Other records ('l', 'p', 'o', 'g', 's', 'usemtl', 'mtllib', free-form, unknown) are not
+    // part of the surface.
   }
-  if (all_rgb && rgb.size() == nv && nv > 0) {
+  if (soup.points.empty()) throw IoError(path + ": no vertices ('v' records)");
+  if (soup.polygons.empty()) throw IoError(path + ": no faces ('f' records)");
+  const std::size_t nv = soup.points.size();
+  if (max_index >= static_cast<long long>(nv))
+    fail(max_index_line, "face refers to vertex " + std::to_string(max_index + 1) + ", but the file has " +
+                             std::to_string(nv) + " vertices (indices are 1-based)");
+
+  if (all_rgb && rgb.size() == nv) {
     double top = 0;
     for (const auto& c : rgb)
       for (double x : c) top = std::max(top, x);
@@ -175,15 +158,28 @@ void read_obj_attributes(std::string_view data, Soup& soup) {
       for (double& x : c) x = std::clamp(x * scale, 0.0, 1.0);
     soup.rgb = std::move(rgb);
   }
-  // A vertex no face refers to takes the texture coordinate / normal of the same index when
-  // there is one (files that list them in step with the vertices), else 0.
-  auto per_vertex = [&](std::vector<long long>& slot, std::size_t count) {
+  // Per-corner values ("f v/vt/vn") become per-vertex when every corner of a vertex names the
+  // same value; otherwise (seams) they are dropped and noted. A vertex no face refers to takes
+  // the value of the same index when there is one (files that list them in step with the
+  // vertices), else 0.
+  auto per_vertex = [&](std::vector<long long>& slots, std::size_t count, std::vector<long long>& of_vertex) {
+    slots.resize(corners, -1);
+    if (std::find(slots.begin(), slots.end(), -1) != slots.end()) return false;  // corners without one
+    of_vertex.assign(nv, -1);  // -1 none yet, -2 conflicting or out of range
+    std::size_t corner = 0;
+    for (const Polygon& poly : soup.polygons)
+      for (std::size_t v : poly) {
+        const long long idx = slots[corner++] < static_cast<long long>(count) ? slots[corner - 1] : -2;
+        long long& slot = of_vertex[v];
+        slot = slot == -1 ? idx : slot == idx ? slot : -2;
+      }
     for (std::size_t v = 0; v < nv; ++v)
-      if (slot[v] == -1) slot[v] = v < count ? static_cast<long long>(v) : -3;
-    return std::none_of(slot.begin(), slot.end(), [](long long x) { return x == -2; });
+      if (of_vertex[v] == -1) of_vertex[v] = v < count ? static_cast<long long>(v) : -3;
+    return std::find(of_vertex.begin(), of_vertex.end(), -2) == of_vertex.end();
   };
-  if (any_vt) {
-    if (corners_without_vt || !per_vertex(vertex_vt, vt.size())) {
+  std::vector<long long> vertex_vt, vertex_vn;
+  if (!corner_vt.empty()) {
+    if (!per_vertex(corner_vt, vt.size(), vertex_vt)) {
       soup.notes.uv_dropped = true;
     } else {
       soup.uv.resize(nv, {0.0, 0.0});
@@ -197,56 +193,20 @@ void read_obj_attributes(std::string_view data, Soup& soup) {
         }
     }
   }
-  if (any_vn) {
+  if (!corner_vn.empty()) {
     soup.notes.had_normals = true;
-    if (!corners_without_vn && per_vertex(vertex_vn, vn.size())) {
+    if (per_vertex(corner_vn, vn.size(), vertex_vn)) {
       soup.normals.resize(nv, {0.0, 0.0, 0.0});
       for (std::size_t v = 0; v < nv; ++v)
         if (vertex_vn[v] >= 0) soup.normals[v] = vn[static_cast<std::size_t>(vertex_vn[v])];
       // Non-finite normals are recomputed instead (libFuzzer found them passed through).
-      for (const auto& n : soup.normals)
-        if (!std::isfinite(n[0]) || !std::isfinite(n[1]) || !std::isfinite(n[2])) {
+      for (const auto& nrm : soup.normals)
+        if (!std::isfinite(nrm[0]) || !std::isfinite(nrm[1]) || !std::isfinite(nrm[2])) {
           soup.normals.clear();
           break;
         }
     }
   }
-}
-
-}  // namespace
-
-void read_obj(const std::string& path, std::string_view data, Soup& soup) {
-  {
-    std::size_t v = 0, f = 0;
-    for (std::size_t at = 0; at < data.size();) {
-      if (data.compare(at, 2, "v ") == 0) ++v;
-      if (data.compare(at, 2, "f ") == 0) ++f;
-      const std::size_t nl = data.find('\n', at);
-      at = nl == std::string_view::npos ? data.size() : nl + 1;
-    }
-    soup.points.reserve(v);
-    soup.polygons.reserve(f);
-  }
-  bool ok;
-  {
-    MemoryStream in(data);
-    ok = CGAL::IO::read_OBJ(in, soup.points, soup.polygons, CGAL::parameters::verbose(false));
-  }
-  std::string filtered;
-  if (!ok && diagnose_obj(data).find("unsupported OBJ record") != std::string::npos) {
-    // Records that are not part of a surface (lines 'l', vertex colours 'vc', ...) are skipped.
-    filtered = without_unknown_obj_records(data);
-    data = filtered;
-    soup = Soup();
-    MemoryStream in(data);
-    ok = CGAL::IO::read_OBJ(in, soup.points, soup.polygons, CGAL::parameters::verbose(false));
-  }
-  if (!ok) throw IoError(path + ": " + diagnose_obj(data));
-  // CGAL's own index check lets index #V + 1 and index 0 through; report those 1-based.
-  for (const Polygon& poly : soup.polygons)
-    for (std::size_t idx : poly)
-      if (idx >= soup.points.size()) throw IoError(path + ": " + diagnose_obj(data));
-  read_obj_attributes(data, soup);
 }
 
 }  // namespace msmesh::io_detail

@@ -222,10 +222,13 @@ std::string check_ascii_off(std::string_view data, const OffHeader& h, bool stri
     if (static_cast<double>(e.size()) - 1 < count)
       return where("face", f) + "lists fewer than " + fmt_number(count) + " vertex indices";
     const std::size_t n = static_cast<std::size_t>(count);
-    for (std::size_t k = 1; k <= n; ++k)
+    for (std::size_t k = 1; k <= n; ++k) {
+      if (e[k] != std::floor(e[k]))  // CGAL would truncate 2.9 to 2
+        return where("face", f) + "vertex index " + fmt_number(e[k]) + " is not an integer";
       if (!(e[k] >= 0 && e[k] < static_cast<double>(h.vertices)))
         return where("face", f) + "refers to vertex " + fmt_number(e[k]) + ", out of range [0, " +
                std::to_string(h.vertices) + ")";
+    }
     if (strict_entries && h.colors) {
       if (!valid_color_entries(e, n + 1, e.size() - n - 1))
         return where("face", f) + "a colour needs 3 or 4 entries in 0..255 or 0..1 (or one colour-map index)";
@@ -238,6 +241,7 @@ std::string check_ascii_off(std::string_view data, const OffHeader& h, bool stri
 }  // namespace
 
 void read_off(const std::string& path, std::string_view data, Soup& soup) {
+  data = without_utf8_bom(data);
   const OffHeader h = parse_off_header(path, data);
   const bool has_extras = h.colors || h.normals || h.homogeneous;
   if (!h.binary) {

@@ -1,18 +1,19 @@
-// PLY reader (CGAL's read_PLY behind guards). CGAL loops over the declared element counts and
-// allocates each list from its count before reading it (a 32-bit count of 2^31 allocates
-// gigabytes); integer-typed x/y/z or halfedge source/target make it dereference a null
-// pointer; 'property' before any 'element' indexes an empty vector; unknown property types
-// are skipped silently, which misaligns binary data. Texture coordinates and normals, which
-// CGAL's soup reader skips, are read here too.
-#include <CGAL/IO/PLY.h>
-
+// PLY reader (our own): the header parsed and checked (element counts against the bytes
+// present, known property types, float or double x/y/z, a vertex_indices list of integers),
+// then the body read value by value as its declared type (PlyBodyReader): ascii, binary little
+// and big endian alike; list count and index types char, uchar, short, ushort, int, uint; an
+// ascii value must be a number of its type (a uchar colour of 300 is refused, not wrapped to
+// 44). Vertex colours (uchar red/green/blue or r/g/b), texture coordinates and normals are read
+// with the points. A UTF-8 byte-order mark before "ply" is skipped.
+//
+// Until this reader, CGAL's read_PLY was used behind guards: it read faces only with int or
+// uint indices, wrapped ascii colours to a byte and allocated lists from their counts.
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <iterator>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -24,12 +25,21 @@
 namespace msmesh::io_detail {
 namespace {
 
+/// A PLY scalar type as the body reader needs it (decoded once from its name).
+struct PlyType {
+  std::string name;
+  int bytes = 0;
+  bool is_float = false;
+  long long lo = 0, hi = 0;  ///< range of an integer type
+};
+
 struct PlyProperty {
   std::string name, type;  ///< scalar type, or the item type of a list
   bool is_list = false;
   std::string count_type;
   int size = 0;        ///< bytes of the scalar / of one list item
   int count_size = 0;  ///< bytes of a list's count
+  PlyType item, count;
 };
 
 struct PlyElement {
@@ -58,7 +68,19 @@ int ply_type_size(const std::string& t) {
   return 0;
 }
 bool ply_is_float(const std::string& t) { return t == "float" || t == "float32" || t == "double" || t == "float64"; }
-bool ply_is_int32(const std::string& t) { return t == "int" || t == "int32" || t == "uint" || t == "uint32"; }
+
+PlyType ply_type(const std::string& t) {
+  PlyType r;
+  r.name = t;
+  r.bytes = ply_type_size(t);
+  r.is_float = ply_is_float(t);
+  const bool is_signed = t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" || t == "int32";
+  if (!r.is_float && r.bytes > 0) {
+    r.hi = is_signed ? (1LL << (8 * r.bytes - 1)) - 1 : (1LL << (8 * r.bytes)) - 1;
+    r.lo = is_signed ? -r.hi - 1 : 0;
+  }
+  return r;
+}
 
 PlyHeader parse_ply_header(const std::string& path, std::string_view data) {
   auto fail = [&path](const std::string& what) { throw IoError(path + ": " + what); };
@@ -120,6 +142,8 @@ PlyHeader parse_ply_header(const std::string& path, std::string_view data) {
         p.size = ply_type_size(p.type);
         if (p.size == 0) fail(where + "unsupported property type " + quote_word(p.type));
       }
+      p.item = ply_type(p.type);
+      p.count = ply_type(p.count_type);
       h.elements.back().properties.push_back(std::move(p));
     }
     // comment, obj_info and unknown keywords are ignored, as CGAL does
@@ -127,7 +151,7 @@ PlyHeader parse_ply_header(const std::string& path, std::string_view data) {
   if (!ended) fail("truncated PLY header (no end_header line)");
   h.body_offset = std::min(pos, data.size());
 
-  // What CGAL's reader assumes without checking.
+  // What the body reader needs.
   for (const PlyElement& e : h.elements) {
     if (e.name == "vertex" || e.name == "vertices") {
       for (const char* c : {"x", "y", "z"}) {
@@ -140,18 +164,12 @@ PlyHeader parse_ply_header(const std::string& path, std::string_view data) {
     } else if (e.name == "face" || e.name == "faces") {
       const PlyProperty* p = e.find("vertex_indices");
       if (!p) p = e.find("vertex_index");
-      if (!p || !p->is_list || !ply_is_int32(p->type))
-        fail("PLY face element has no 'vertex_indices' list of int or uint");
-    } else if (e.name == "halfedge") {
-      for (const char* c : {"source", "target"}) {
-        const PlyProperty* p = e.find(c);
-        if (p && (p->is_list || (p->type != "uint" && p->type != "uint32")))
-          fail("PLY halfedge property '" + std::string(c) + "' must be uint");
-      }
+      if (!p || !p->is_list || ply_is_float(p->type))
+        fail("PLY face element has no 'vertex_indices' list of integers");
     }
   }
-  // The declared counts must fit in the bytes present: CGAL loops over them, and an element
-  // without properties would make it loop (and, for vertices, allocate) without reading.
+  // The declared counts must fit in the bytes present (the body reader reserves from them, and
+  // an element without properties would be looped over without reading).
   const double body = static_cast<double>(data.size() - h.body_offset);
   double needed = 0;
   for (const PlyElement& e : h.elements) {
@@ -172,216 +190,194 @@ PlyHeader parse_ply_header(const std::string& path, std::string_view data) {
   return h;
 }
 
-/// With 32-bit list counts CGAL allocates each list before reading it; walk the body and
-/// check every count against the bytes that remain.
-void check_ply_list_counts(const std::string& path, std::string_view data, const PlyHeader& h) {
-  bool wide = false;
-  for (const auto& e : h.elements)
-    for (const auto& p : e.properties) wide = wide || (p.is_list && p.count_size == 4);
-  if (!wide) return;
-  auto fail = [&](const PlyElement& e, unsigned long long item, const std::string& what) {
-    throw IoError(path + ": PLY " + e.name + " " + std::to_string(item) + ": " + what);
-  };
-  std::size_t pos = h.body_offset;
-  const std::size_t size = data.size();
-  if (h.format == PlyHeader::Ascii) {
-    auto next_word = [&]() -> std::string_view {
-      while (pos < size && std::isspace(static_cast<unsigned char>(data[pos]))) ++pos;
-      const std::size_t start = pos;
-      while (pos < size && !std::isspace(static_cast<unsigned char>(data[pos]))) ++pos;
-      return data.substr(start, pos - start);
-    };
-    for (const auto& e : h.elements)
-      for (unsigned long long j = 0; j < e.count; ++j)
-        for (const auto& p : e.properties) {
-          const std::string_view w = next_word();
-          if (w.empty()) fail(e, j, "file ends early (truncated)");
-          if (!p.is_list) continue;
-          const auto n = parse_integer(w);
-          if (!n || *n < 0 || static_cast<unsigned long long>(*n) > (size - pos) / 2 + 1)
-            fail(e, j, "invalid list count " + quote_word(w));
-          for (long long k = 0; k < *n; ++k)
-            if (next_word().empty()) fail(e, j, "file ends early (truncated)");
-        }
-    return;
+/// Reads the values of a PLY body one at a time, each as its declared type: binary values
+/// from their bytes in the file's byte order, ascii words through read_text.h's strict
+/// parsers (an integer type takes a whole integer in its range, so 300 is no uchar and 2.9 no
+/// int; float takes the nearest float, as CGAL read it). Errors name the element, its number
+/// and, for ascii, the line.
+class PlyBodyReader {
+ public:
+  PlyBodyReader(const std::string& path, std::string_view data, const PlyHeader& h)
+      : path_(path), data_(data), pos_(h.body_offset), format_(h.format) {
+    line_ = 1 + static_cast<std::size_t>(std::count(data.begin(), data.begin() + static_cast<std::ptrdiff_t>(pos_), '\n'));
   }
-  const bool big = h.format == PlyHeader::BinaryBigEndian;
-  auto read_count = [&](int bytes) -> long long {
-    unsigned long long v = 0;
-    for (int b = 0; b < bytes; ++b) {
-      const unsigned long long byte = static_cast<unsigned char>(data[pos + b]);
-      v |= byte << (8 * (big ? bytes - 1 - b : b));
-    }
-    pos += bytes;
-    return static_cast<long long>(v);  // signed types: a negative count only makes CGAL throw
-  };
-  for (const auto& e : h.elements)
-    for (unsigned long long j = 0; j < e.count; ++j)
-      for (const auto& p : e.properties) {
-        if (!p.is_list) {
-          if (size - pos < static_cast<std::size_t>(p.size)) fail(e, j, "file ends early (truncated)");
-          pos += p.size;
-          continue;
-        }
-        if (size - pos < static_cast<std::size_t>(p.count_size)) fail(e, j, "file ends early (truncated)");
-        const long long n = read_count(p.count_size);
-        const bool is_signed = p.count_type == "int" || p.count_type == "int32";
-        const long long value = is_signed ? static_cast<std::int32_t>(n) : n;
-        if (value < 0 || static_cast<unsigned long long>(value) > (size - pos) / static_cast<std::size_t>(p.size))
-          fail(e, j, "list count " + std::to_string(value) + " exceeds the rest of the file (corrupt or truncated)");
-        pos += static_cast<std::size_t>(value) * p.size;
-      }
-}
 
-/// Texture coordinates (texture_u/texture_v, u/v, s/t, texture_s/texture_t) and normals
-/// (nx/ny/nz) of the PLY vertex element, which CGAL's soup reader skips. Walks the body up to
-/// the end of the vertex element; gives up silently (no attributes) if it runs out of data.
-void read_ply_attributes(std::string_view data, const PlyHeader& h, Soup& soup) {
-  std::size_t vertex_element = h.elements.size();
-  for (std::size_t k = 0; k < h.elements.size(); ++k)
-    if (h.elements[k].name == "vertex" || h.elements[k].name == "vertices") {
-      vertex_element = k;
-      break;
-    }
-  if (vertex_element == h.elements.size()) return;
-  const PlyElement& ve = h.elements[vertex_element];
-  static const char* const uv_names[][2] = {{"texture_u", "texture_v"}, {"u", "v"}, {"s", "t"}, {"texture_s", "texture_t"}};
-  int iu = -1, iv = -1, inx = -1, iny = -1, inz = -1;
-  for (const auto& names : uv_names) {
-    int a = -1, b = -1;
-    for (std::size_t p = 0; p < ve.properties.size(); ++p) {
-      if (ve.properties[p].is_list) continue;
-      if (ve.properties[p].name == names[0]) a = static_cast<int>(p);
-      if (ve.properties[p].name == names[1]) b = static_cast<int>(p);
-    }
-    if (a >= 0 && b >= 0) {
-      iu = a, iv = b;
-      break;
-    }
-  }
-  for (std::size_t p = 0; p < ve.properties.size(); ++p) {
-    if (ve.properties[p].is_list) continue;
-    if (ve.properties[p].name == "nx") inx = static_cast<int>(p);
-    if (ve.properties[p].name == "ny") iny = static_cast<int>(p);
-    if (ve.properties[p].name == "nz") inz = static_cast<int>(p);
-  }
-  const bool want_uv = iu >= 0, want_n = inx >= 0 && iny >= 0 && inz >= 0;
-  if (!want_uv && !want_n) return;
-  if (ve.count != soup.points.size()) return;
+  void at(const PlyElement& e, unsigned long long item) { element_ = &e, item_ = item; }
 
-  const std::size_t size = data.size();
-  std::size_t pos = h.body_offset;
-  const bool ascii = h.format == PlyHeader::Ascii, big = h.format == PlyHeader::BinaryBigEndian;
-  bool ok = true;
-  auto next_word = [&]() -> std::string_view {
-    while (pos < size && std::isspace(static_cast<unsigned char>(data[pos]))) ++pos;
-    const std::size_t start = pos;
-    while (pos < size && !std::isspace(static_cast<unsigned char>(data[pos]))) ++pos;
-    return data.substr(start, pos - start);
-  };
-  auto read_value = [&](const std::string& type, int bytes) -> double {
-    if (!ok) return 0;
-    if (ascii) {
-      const std::string_view w = next_word();
-      const auto x = parse_double(w);
-      if (!x) ok = false;
-      return x ? *x : 0.0;
+  [[noreturn]] void fail(const std::string& what) const {
+    std::string where = "PLY " + element_->name + " " + std::to_string(item_);
+    if (format_ == PlyHeader::Ascii) where += " (line " + std::to_string(line_) + ")";
+    throw IoError(path_ + ": " + where + ": " + what);
+  }
+
+  /// A value of integer type `t` (list counts and indices, colours, other properties).
+  long long integer(const PlyType& t, const std::string& name) {
+    if (t.is_float) return static_cast<long long>(real(t, name));
+    if (format_ == PlyHeader::Ascii) {
+      const std::string_view w = word();
+      const auto v = parse_strict_integer(w, t.lo, t.hi);
+      if (!v) fail(quote_word(name) + " value " + quote_word(w) + " is not a " + t.name + " (an integer in " +
+                   std::to_string(t.lo) + ".." + std::to_string(t.hi) + ")");
+      return *v;
     }
-    if (size - pos < static_cast<std::size_t>(bytes) || pos > size) {
-      ok = false;
-      return 0;
+    const std::uint64_t u = bytes(t.bytes);
+    const int shift = 64 - 8 * t.bytes;
+    return t.lo < 0 ? static_cast<std::int64_t>(u << shift) >> shift : static_cast<long long>(u);
+  }
+
+  /// A value of any type as a double.
+  double real(const PlyType& t, const std::string& name) {
+    if (!t.is_float) return static_cast<double>(integer(t, name));
+    const bool single = t.bytes == 4;
+    if (format_ == PlyHeader::Ascii) {
+      const std::string_view w = word();
+      const auto x = single ? parse_float(w) : parse_double(w);
+      if (!x) fail("cannot read " + quote_word(name) + " value " + quote_word(w));
+      return *x;
     }
-    unsigned char b[8];
-    for (int i = 0; i < bytes; ++i) b[big ? bytes - 1 - i : i] = static_cast<unsigned char>(data[pos + i]);
-    pos += bytes;
-    // b holds the value in little-endian order; assemble it for this (little-endian) host.
-    std::uint64_t u = 0;
-    for (int i = 0; i < bytes; ++i) u |= std::uint64_t(b[i]) << (8 * i);
-    if (type == "float" || type == "float32") {
+    const std::uint64_t u = bytes(single ? 4 : 8);
+    if (single) {
       float f;
       const std::uint32_t u32 = static_cast<std::uint32_t>(u);
       std::memcpy(&f, &u32, 4);
       return f;
     }
-    if (type == "double" || type == "float64") {
-      double d;
-      std::memcpy(&d, &u, 8);
-      return d;
-    }
-    const bool is_signed = type == "char" || type == "int8" || type == "short" || type == "int16" || type == "int" ||
-                           type == "int32";
-    if (is_signed) {
-      const int shift = 64 - 8 * bytes;
-      return static_cast<double>(static_cast<std::int64_t>(u << shift) >> shift);
-    }
-    return static_cast<double>(u);
-  };
-  std::vector<std::array<double, 2>> uv;
-  std::vector<std::array<double, 3>> normals;
-  if (want_uv) uv.resize(ve.count);
-  if (want_n) normals.resize(ve.count);
-  for (std::size_t k = 0; k <= vertex_element && ok; ++k) {
-    const PlyElement& e = h.elements[k];
-    for (unsigned long long j = 0; j < e.count && ok; ++j)
-      for (std::size_t p = 0; p < e.properties.size() && ok; ++p) {
-        const PlyProperty& prop = e.properties[p];
-        if (prop.is_list) {
-          const double n = read_value(prop.count_type, prop.count_size);
-          if (!(n >= 0) || n > double(size)) ok = false;
-          for (long long i = 0; ok && i < static_cast<long long>(n); ++i) read_value(prop.type, prop.size);
-          continue;
-        }
-        const double x = read_value(prop.type, prop.size);
-        if (k != vertex_element) continue;
-        const int pi = static_cast<int>(p);
-        if (pi == iu) uv[j][0] = x;
-        if (pi == iv) uv[j][1] = x;
-        if (want_n && pi == inx) normals[j][0] = x;  // nx alone (no ny, nz): no normals
-        if (want_n && pi == iny) normals[j][1] = x;
-        if (want_n && pi == inz) normals[j][2] = x;
-      }
+    double d;
+    std::memcpy(&d, &u, 8);
+    return d;
   }
-  if (!ok) return;
-  auto finite2 = [](const std::array<double, 2>& a) { return std::isfinite(a[0]) && std::isfinite(a[1]); };
-  auto finite3 = [](const std::array<double, 3>& a) {
-    return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
-  };
-  if (want_uv && std::all_of(uv.begin(), uv.end(), finite2)) soup.uv = std::move(uv);
-  if (want_n) {
-    soup.notes.had_normals = true;
-    if (std::all_of(normals.begin(), normals.end(), finite3)) soup.normals = std::move(normals);
+
+  /// A list's count, checked against the bytes that remain (each item needs at least one).
+  std::size_t list_count(const PlyProperty& p) {
+    const long long n = integer(p.count, p.name);
+    const std::size_t item = format_ == PlyHeader::Ascii ? 2 : static_cast<std::size_t>(p.size);
+    if (n < 0 || static_cast<unsigned long long>(n) > (data_.size() - pos_) / item + 1)
+      fail("list count " + std::to_string(n) + " exceeds the rest of the file (corrupt or truncated)");
+    return static_cast<std::size_t>(n);
   }
+
+ private:
+  std::string_view word() {
+    while (pos_ < data_.size() && std::isspace(static_cast<unsigned char>(data_[pos_]))) line_ += data_[pos_++] == '\n';
+    const std::size_t start = pos_;
+    while (pos_ < data_.size() && !std::isspace(static_cast<unsigned char>(data_[pos_]))) ++pos_;
+    if (pos_ == start) fail("the file ends early (truncated PLY file)");
+    return data_.substr(start, pos_ - start);
+  }
+  std::uint64_t bytes(int n) {
+    if (data_.size() - pos_ < static_cast<std::size_t>(n)) fail("the file ends early (truncated PLY file)");
+    std::uint64_t u = 0;
+    const bool big = format_ == PlyHeader::BinaryBigEndian;
+    for (int i = 0; i < n; ++i)
+      u |= std::uint64_t(static_cast<unsigned char>(data_[pos_ + static_cast<std::size_t>(i)])) << (8 * (big ? n - 1 - i : i));
+    pos_ += static_cast<std::size_t>(n);
+    return u;
+  }
+
+  const std::string& path_;
+  std::string_view data_;
+  std::size_t pos_, line_ = 1;
+  PlyHeader::Format format_;
+  const PlyElement* element_ = nullptr;
+  unsigned long long item_ = 0;
+};
+
+/// Index of the property named `name` (not a list) in `e`, or -1.
+int find_scalar(const PlyElement& e, const char* name) {
+  for (std::size_t p = 0; p < e.properties.size(); ++p)
+    if (!e.properties[p].is_list && e.properties[p].name == name) return static_cast<int>(p);
+  return -1;
 }
 
 }  // namespace
 
 void read_ply(const std::string& path, std::string_view data, Soup& soup) {
+  data = without_utf8_bom(data);
   const PlyHeader h = parse_ply_header(path, data);
-  check_ply_list_counts(path, data, h);
-  for (const PlyElement& e : h.elements) {  // counts are bounded by the file size (checked)
-    if (e.name == "vertex" || e.name == "vertices") soup.points.reserve(soup.points.size() + e.count);
-    if (e.name == "face" || e.name == "faces") soup.polygons.reserve(soup.polygons.size() + e.count);
-  }
-  MemoryStream in(data);
-  // CGAL needs the vertex and face colour outputs to be of one type.
-  std::vector<CGAL::IO::Color> colors, face_colors;
-  const bool ok = CGAL::IO::read_PLY(in, soup.points, soup.polygons,
-                                     CGAL::parameters::vertex_color_output_iterator(std::back_inserter(colors))
-                                         .face_color_output_iterator(std::back_inserter(face_colors))
-                                         .verbose(false));
-  if (!ok && h.format == PlyHeader::Ascii) {
-    // CGAL's ascii parse stops at words like "nan" or "inf"; say so.
-    const auto words = split_words(data.substr(h.body_offset));
-    for (const std::string_view w : words) {
-      const auto x = parse_double(w);
-      if (x && !std::isfinite(*x)) throw IoError(path + ": non-finite value " + quote_word(w) + " in the ascii PLY body");
+  PlyBodyReader in(path, data, h);
+  bool all_uv = true, all_normals = true;
+  for (const PlyElement& e : h.elements) {
+    const bool vertex = e.name == "vertex" || e.name == "vertices", face = e.name == "face" || e.name == "faces";
+    // Vertex: x, y, z; a colour from red/green/blue (else r/g/b) when all three are uchar,
+    // as CGAL read them; texture coordinates and normals. Face: the vertex_indices list (else
+    // vertex_index) of any integer type. Everything else is read and skipped.
+    int x = -1, y = -1, z = -1, col[3] = {-1, -1, -1}, iu = -1, iv = -1, nx = -1, ny = -1, nz = -1, idx = -1;
+    if (vertex) {
+      x = find_scalar(e, "x"), y = find_scalar(e, "y"), z = find_scalar(e, "z");
+      const char* const names[3][2] = {{"red", "r"}, {"green", "g"}, {"blue", "b"}};
+      bool uchar = true;
+      for (int c = 0; c < 3; ++c) {
+        col[c] = find_scalar(e, names[c][0]);
+        if (col[c] < 0) col[c] = find_scalar(e, names[c][1]);
+        const std::string t = col[c] < 0 ? "" : e.properties[static_cast<std::size_t>(col[c])].type;
+        uchar = uchar && (t == "uchar" || t == "uint8");
+      }
+      if (!uchar) col[0] = col[1] = col[2] = -1;
+      static const char* const uv_names[][2] = {{"texture_u", "texture_v"}, {"u", "v"}, {"s", "t"}, {"texture_s", "texture_t"}};
+      for (const auto& names : uv_names)
+        if (iu < 0 && find_scalar(e, names[0]) >= 0 && find_scalar(e, names[1]) >= 0)
+          iu = find_scalar(e, names[0]), iv = find_scalar(e, names[1]);
+      nx = find_scalar(e, "nx"), ny = find_scalar(e, "ny"), nz = find_scalar(e, "nz");
+      if (ny < 0 || nz < 0) nx = -1;  // nx alone (no ny, nz): no normals
+      if (nx >= 0) soup.notes.had_normals = true;
+      soup.points.reserve(soup.points.size() + e.count);  // counts are bounded by the file size (checked)
+    }
+    if (face) {
+      for (const char* name : {"vertex_indices", "vertex_index"})
+        for (std::size_t p = 0; p < e.properties.size() && idx < 0; ++p)
+          if (e.properties[p].is_list && e.properties[p].name == name) idx = static_cast<int>(p);
+      soup.polygons.reserve(soup.polygons.size() + e.count);
+    }
+    double value[3] = {0, 0, 0}, uv[2] = {0, 0}, normal[3] = {0, 0, 0};
+    int rgb[3] = {0, 0, 0};
+    for (unsigned long long j = 0; j < e.count; ++j) {
+      in.at(e, j);
+      for (std::size_t p = 0; p < e.properties.size(); ++p) {
+        const PlyProperty& prop = e.properties[p];
+        const int pi = static_cast<int>(p);
+        if (prop.is_list) {
+          const std::size_t n = in.list_count(prop);
+          if (pi == idx) {
+            Polygon& poly = soup.polygons.emplace_back();
+            poly.resize(n);
+            // A negative index wraps to a huge one here; soup_to_mesh reports it signed.
+            for (std::size_t k = 0; k < n; ++k) poly[k] = static_cast<std::size_t>(in.integer(prop.item, prop.name));
+          } else {
+            for (std::size_t k = 0; k < n; ++k) in.real(prop.item, prop.name);
+          }
+          continue;
+        }
+        if (pi == col[0] || pi == col[1] || pi == col[2]) {
+          rgb[pi == col[0] ? 0 : pi == col[1] ? 1 : 2] = static_cast<int>(in.integer(prop.item, prop.name));
+          continue;
+        }
+        const double v = in.real(prop.item, prop.name);
+        if (pi == x) value[0] = v;
+        if (pi == y) value[1] = v;
+        if (pi == z) value[2] = v;
+        if (pi == iu) uv[0] = v;
+        if (pi == iv) uv[1] = v;
+        if (pi == nx) normal[0] = v;
+        if (pi == ny) normal[1] = v;
+        if (pi == nz) normal[2] = v;
+      }
+      if (!vertex) continue;
+      soup.points.emplace_back(value[0], value[1], value[2]);
+      if (col[0] >= 0) soup.vertex_colors.emplace_back(rgb[0], rgb[1], rgb[2]);
+      if (iu >= 0) {
+        all_uv = all_uv && std::isfinite(uv[0]) && std::isfinite(uv[1]);
+        soup.uv.push_back({uv[0], uv[1]});
+      }
+      if (nx >= 0) {
+        all_normals = all_normals && std::isfinite(normal[0]) && std::isfinite(normal[1]) && std::isfinite(normal[2]);
+        soup.normals.push_back({normal[0], normal[1], normal[2]});
+      }
     }
   }
-  if (!ok)
-    throw IoError(path + (h.format == PlyHeader::Ascii ? ": malformed or truncated ascii PLY body (CGAL's reader failed)"
-                                                       : ": malformed or truncated binary PLY body (CGAL's reader failed)"));
-  soup.vertex_colors = std::move(colors);
-  read_ply_attributes(data, h, soup);
+  // Attributes with a non-finite value, or missing on some vertex element, are dropped.
+  if (!all_uv || soup.uv.size() != soup.points.size()) soup.uv.clear();
+  if (!all_normals || soup.normals.size() != soup.points.size()) soup.normals.clear();
+  if (soup.vertex_colors.size() != soup.points.size()) soup.vertex_colors.clear();
 }
 
 }  // namespace msmesh::io_detail

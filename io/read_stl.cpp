@@ -17,6 +17,13 @@
 namespace msmesh::io_detail {
 
 void read_stl(const std::string& path, std::string_view data, Soup& soup) {
+  // A byte-order mark before "solid" (ascii files only: a binary header may start with anything).
+  const bool binary_size = data.size() >= 84 && [&] {
+    std::uint32_t n;
+    std::memcpy(&n, data.data() + 80, 4);
+    return data.size() == 84 + 50 * static_cast<std::uint64_t>(n);
+  }();
+  if (!binary_size && without_utf8_bom(data).substr(0, 5) == "solid") data = without_utf8_bom(data);
   std::size_t first = 0;
   while (first < data.size() && std::isspace(static_cast<unsigned char>(data[first]))) ++first;
   const bool says_solid = data.substr(first, 5) == "solid";

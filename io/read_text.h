@@ -25,8 +25,10 @@ inline std::vector<std::string_view> split_lines(std::string_view data) {
   return lines;
 }
 
-inline std::vector<std::string_view> split_words(std::string_view line) {
-  std::vector<std::string_view> words;
+/// Splits `line` into `words` at any whitespace (space, \t, \r, \v, \f, \n); `words` is
+/// reused so that a reader can split every line without allocating.
+inline void split_words(std::string_view line, std::vector<std::string_view>& words) {
+  words.clear();
   std::size_t i = 0;
   while (i < line.size()) {
     while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
@@ -34,16 +36,41 @@ inline std::vector<std::string_view> split_words(std::string_view line) {
     while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
     if (i > start) words.push_back(line.substr(start, i - start));
   }
+}
+
+inline std::vector<std::string_view> split_words(std::string_view line) {
+  std::vector<std::string_view> words;
+  split_words(line, words);
   return words;
 }
 
-/// Parses a whole word as a number (strtod semantics: also nan/inf).
-inline std::optional<double> parse_double(std::string_view word) {
-  const std::string s(word);
+/// Parses a whole word as a number with `strto` (strtod semantics: also nan/inf), copying
+/// short words to the stack rather than allocating.
+template <typename T>
+std::optional<T> parse_number(std::string_view word, T (*strto)(const char*, char**)) {
+  if (word.empty()) return std::nullopt;
+  char buf[64];
+  std::string heap;
+  const char* s = buf;
+  if (word.size() < sizeof buf) {
+    word.copy(buf, word.size());
+    buf[word.size()] = '\0';
+  } else {
+    heap.assign(word);
+    s = heap.c_str();
+  }
   char* end = nullptr;
-  const double v = std::strtod(s.c_str(), &end);
-  if (s.empty() || end != s.c_str() + s.size()) return std::nullopt;
+  const T v = strto(s, &end);
+  if (end != s + word.size()) return std::nullopt;
   return v;
+}
+
+inline std::optional<double> parse_double(std::string_view word) { return parse_number<double>(word, std::strtod); }
+
+/// As parse_double, rounded to float first (as `istream >> float` reads a PLY float).
+inline std::optional<double> parse_float(std::string_view word) {
+  const auto x = parse_number<float>(word, std::strtof);
+  return x ? std::optional<double>(*x) : std::nullopt;
 }
 
 inline std::optional<long long> parse_integer(std::string_view word) {
@@ -52,6 +79,25 @@ inline std::optional<long long> parse_integer(std::string_view word) {
   errno = 0;
   const long long v = std::strtoll(s.c_str(), &end, 10);
   if (s.empty() || end != s.c_str() + s.size() || errno == ERANGE) return std::nullopt;
+  return v;
+}
+
+/// Skips a UTF-8 byte-order mark at the start of a text file (some Windows exporters write one).
+inline std::string_view without_utf8_bom(std::string_view data) {
+  if (data.substr(0, 3) == "\xEF\xBB\xBF") data.remove_prefix(3);
+  return data;
+}
+
+/// Parses a whole word as an integer in [lo, hi]: an optional '-' and decimal digits only
+/// (no '+', point, exponent or spaces), so that "2.9", "1e3" or "99999999999" are refused
+/// rather than read as a different number.
+inline std::optional<long long> parse_strict_integer(std::string_view word, long long lo, long long hi) {
+  std::size_t i = !word.empty() && word[0] == '-' ? 1 : 0;
+  if (i == word.size() || word.size() - i > 19) return std::nullopt;
+  for (std::size_t k = i; k < word.size(); ++k)
+    if (word[k] < '0' || word[k] > '9') return std::nullopt;
+  const auto v = parse_integer(word);
+  if (!v || *v < lo || *v > hi) return std::nullopt;
   return v;
 }
 
