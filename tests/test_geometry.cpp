@@ -11,22 +11,8 @@
 
 using namespace msmesh;
 
-namespace {
-
-/// The right triangle (0,0,0), (1,0,0), (0,1,0).
-Mesh right_triangle() {
-  Mesh m;
-  m.V.resize(3, 3);
-  m.V << 0, 0, 0, 1, 0, 0, 0, 1, 0;
-  m.F.resize(1, 3);
-  m.F << 0, 1, 2;
-  return m;
-}
-
-}  // namespace
-
 TEST(Geometry, RightTriangleInClosedForm) {
-  const Mesh m = right_triangle();
+  const Mesh m = test::right_triangle();
   EXPECT_DOUBLE_EQ(face_areas(m.V, m.F)(0), 0.5);
   EXPECT_TRUE(face_normals(m.V, m.F).row(0).isApprox(Eigen::RowVector3d(0, 0, 1)));
   EXPECT_TRUE(face_barycenters(m.V, m.F).row(0).isApprox(Eigen::RowVector3d(1.0 / 3, 1.0 / 3, 0)));
@@ -96,7 +82,7 @@ TEST(Geometry, LengthsScaleLinearlyAndAreasQuadratically) {
 }
 
 TEST(Geometry, DegenerateFacesIsolatedVerticesAndNoFaces) {
-  Mesh m = right_triangle();
+  Mesh m = test::right_triangle();
   m.V.conservativeResize(5, 3);
   m.V.row(3) << 2, 0, 0;  // collinear with vertices 0 and 1
   m.V.row(4) << 9, 9, 9;  // isolated

@@ -44,6 +44,16 @@ inline Mesh noisy_cube(int n, double sigma = 0.2) {
   return m;
 }
 
+/// The right triangle (0,0,0), (1,0,0), (0,1,0).
+inline Mesh right_triangle() {
+  Mesh m;
+  m.V.resize(3, 3);
+  m.V << 0, 0, 0, 1, 0, 0, 0, 1, 0;
+  m.F.resize(1, 3);
+  m.F << 0, 1, 2;
+  return m;
+}
+
 /// An n×n grid of the unit square in the plane z = 0 (open, with boundary), with an optional
 /// height function applied.
 inline Mesh grid(int n, double bump = 0.0) {
@@ -259,13 +269,10 @@ inline Mesh grid_with_z_noise() {
   return m;
 }
 
-/// One triangle, slightly tilted.
+/// One triangle, slightly tilted: right_triangle() with its third corner raised by 0.1.
 inline Mesh single_triangle() {
-  Mesh m;
-  m.V.resize(3, 3);
-  m.V << 0, 0, 0, 1, 0, 0, 0, 1, 0.1;
-  m.F.resize(1, 3);
-  m.F << 0, 1, 2;
+  Mesh m = right_triangle();
+  m.V(2, 2) = 0.1;
   return m;
 }
 
