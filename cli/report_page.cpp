@@ -282,7 +282,7 @@ std::string table_html(const ReportTable& t) {
   return o.str();
 }
 
-const char* kStyle = R"css(
+const char* const kStyle = R"css(
 :root{--ink:#222;--muted:#667;--line:#dde;--accent:#1f5fa8}
 *{box-sizing:border-box}
 body{margin:0;font:15px/1.45 system-ui,-apple-system,"Segoe UI",Roboto,sans-serif;color:var(--ink);background:#f6f7f9}

@@ -1,9 +1,11 @@
-// Denoising: invariances, convergence behaviour, the edge field on a noisy cube, and quality
-// on a noisy cube (issue 3's test targets).
+// Denoising (denoise.h): invariances, convergence behaviour, the edge field on a noisy cube,
+// quality on a noisy cube (issue 3's test targets), and the awkward meshes of
+// docs/robustness.md through the library.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <string>
 
 #include "msmesh/denoise.h"
 #include "msmesh/presets.h"
@@ -11,8 +13,10 @@
 #include "msmesh/geometry.h"
 #include "msmesh/metrics.h"
 #include "msmesh/noise.h"
+#include "msmesh/repair.h"
 #include "msmesh/shapes.h"
 #include "msmesh/topology.h"
+#include "test_helpers.h"
 
 using namespace msmesh;
 
@@ -132,16 +136,6 @@ TEST(Denoise, BilateralBaselineDenoises) {
   EXPECT_LT(normal_errors(r.V, c.clean.F, c.clean.V, c.clean.F).msae, 0.3 * before);
 }
 
-TEST(Denoise, VertexUpdateKeepsAMeshThatAlreadyMatchesItsNormals) {
-  // With ω₂ = 0 the energy (24) is zero at V⁰ when the targets are V⁰'s own normals. (The
-  // fairness term is not: it pulls edge-adjacent triangle pairs towards parallelograms.)
-  const Mesh m = make_sphere(2);
-  VertexUpdateOptions o;
-  o.omega2 = 0;
-  const VertexUpdateResult r = update_vertices(m.V, m.F, face_normals(m.V, m.F), {}, o);
-  EXPECT_LT((r.V - m.V).cwiseAbs().maxCoeff(), 1e-9);
-}
-
 TEST(Denoise, VertexUpdateFallbackAvoidsFlips) {
   // Target normals opposite to a face's current normal trigger the degenerate projection
   // (eq. 25) and the face must not end up inverted with respect to its neighbours' targets.
@@ -179,4 +173,126 @@ TEST(Denoise, ProgressIsReportedAndCanCancel) {
   });
   EXPECT_GT(calls, 2);
   EXPECT_THROW(denoise(m.V, m.F, preset_options("cad"), [](const ProgressEvent&) { return false; }), Cancelled);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Awkward but valid meshes (docs/robustness.md, "Awkward meshes"): processed, nothing lost.
+// The same meshes through `msmesh denoise`: cli/test_denoise_cli.cpp (AwkwardMeshesCli.*).
+
+namespace {
+
+/// Denoising through the library must keep #V, F and order, and give finite positions.
+DenoiseResult denoise_checked(const Mesh& m, const std::string& preset = "cad") {
+  const DenoiseResult r = denoise(m.V, m.F, preset_options(preset));
+  EXPECT_EQ(r.V.rows(), m.V.rows());
+  EXPECT_TRUE(r.V.allFinite());
+  return r;
+}
+
+}  // namespace
+
+TEST(AwkwardMeshes, NonManifoldEdgeIsDenoisedWithoutNaN) {
+  Mesh m = test::fin();
+  denoise_checked(m);
+  denoise_checked(m, "smooth");
+}
+
+TEST(AwkwardMeshes, NonManifoldVertexIsDenoisedWithoutNaN) {
+  const Mesh m = test::bow_tie_tetrahedra();
+  const TopologySummary s = summarize_topology(m.F, build_topology(m.F, m.V.rows()));
+  EXPECT_EQ(s.non_manifold_vertices, 1);
+  const DenoiseResult r = denoise_checked(test::noisy(m, 0.02));
+}
+
+TEST(AwkwardMeshes, DuplicateFacesAreDenoisedWithoutNaN) {
+  const Mesh dup = test::grid_with_duplicate_faces();
+  denoise_checked(test::noisy(dup, 0.01));
+  denoise_checked(test::noisy(dup, 0.01), "smooth");
+}
+
+TEST(AwkwardMeshes, ZeroAreaFacesAreDenoisedWithoutNaN) {
+  const Mesh m = test::grid_with_zero_area_faces();
+  for (const std::string preset : {"cad", "smooth"}) denoise_checked(m, preset);
+  DenoiseOptions bil = preset_options("cad");
+  bil.method = DenoiseMethod::Bilateral;
+  EXPECT_TRUE(denoise(m.V, m.F, bil).V.allFinite());
+}
+
+TEST(AwkwardMeshes, UnreferencedVerticesStayInPlaceAndInOrder) {
+  const Mesh m = test::grid_with_unreferenced_vertices();
+  const Eigen::Index n = m.V.rows() - 3;
+  const DenoiseResult r = denoise_checked(m);
+  for (Eigen::Index i : {Eigen::Index(0), 1 + n / 2, n + 2}) EXPECT_EQ(r.V.row(i), m.V.row(i)) << "vertex " << i;
+}
+
+TEST(AwkwardMeshes, InconsistentOrientationIsDenoisedWithoutNaNAndRepaired) {
+  const Mesh m = test::grid_with_flipped_faces();
+  EXPECT_GT(summarize_topology(m.F, build_topology(m.F, m.V.rows())).inconsistently_oriented_edges, 0);
+  denoise_checked(m);
+  Mesh fixed = m;
+  const RepairReport rep = repair_mesh(fixed);
+  EXPECT_EQ(rep.flipped_faces, (m.F.rows() + 2) / 3);  // the first face sets the orientation
+  EXPECT_EQ(summarize_topology(fixed.F, build_topology(fixed.F, fixed.V.rows())).inconsistently_oriented_edges, 0);
+}
+
+TEST(AwkwardMeshes, EveryComponentIsDenoised) {
+  const Mesh m = test::two_noisy_grids();
+  const Eigen::Index na = test::grid(10).V.rows(), nb = test::grid(8).V.rows();
+  EXPECT_EQ(summarize_topology(m.F, build_topology(m.F, m.V.rows())).components, 2);
+  const DenoiseResult r = denoise_checked(m);
+  EXPECT_LT(test::z_rms(r.V, 0, na), 0.5 * test::z_rms(m.V, 0, na));
+  EXPECT_LT(test::z_rms(r.V, na, nb), 0.5 * test::z_rms(m.V, na, nb));
+}
+
+TEST(AwkwardMeshes, OpenBoundariesAreKept) {
+  const Mesh m = test::grid_with_z_noise();
+  const DenoiseResult r = denoise_checked(m);
+  // The boundary is not pulled in: the bounding box in x and y stays (within a tenth of an edge).
+  const Eigen::RowVector3d lo = r.V.colwise().minCoeff(), hi = r.V.colwise().maxCoeff();
+  EXPECT_NEAR(lo(0), 0.0, 0.01);
+  EXPECT_NEAR(lo(1), 0.0, 0.01);
+  EXPECT_NEAR(hi(0), 1.0, 0.01);
+  EXPECT_NEAR(hi(1), 1.0, 0.01);
+  EXPECT_LT(test::z_rms(r.V, 0, r.V.rows()), 0.5 * test::z_rms(m.V, 0, m.V.rows()));
+  const auto s = summarize_topology(m.F, build_topology(m.F, m.V.rows()));
+  EXPECT_EQ(s.boundary_loops.size(), 1u);
+}
+
+TEST(AwkwardMeshes, SingleTriangle) {
+  const Mesh m = test::single_triangle();
+  const DenoiseResult r = denoise_checked(m);
+  EXPECT_LT((r.V - m.V).norm(), 1e-6) << "a lone triangle has nothing to smooth";
+}
+
+TEST(AwkwardMeshes, NoFacesThroughTheLibraryIsANoOp) {
+  Eigen::MatrixXd V(2, 3);
+  V << 0, 0, 0, 1, 2, 3;
+  const DenoiseResult r = denoise(V, Eigen::MatrixXi(0, 3));
+  EXPECT_EQ(r.V, V);
+}
+
+TEST(AwkwardMeshes, NonFiniteOrOutOfRangeInputIsRejectedByTheLibrary) {
+  Mesh m = test::tetrahedron();
+  Mesh nan = m;
+  nan.V(2, 1) = std::nan("");
+  try {
+    denoise(nan.V, nan.F);
+    FAIL() << "expected InvalidInput";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("vertex 2 has a non-finite coordinate"), std::string::npos) << e.what();
+  }
+  Mesh inf = m;
+  inf.V(0, 0) = INFINITY;
+  EXPECT_THROW(denoise(inf.V, inf.F), InvalidInput);
+  EXPECT_THROW(repair_mesh(inf), InvalidInput);
+  Mesh oob = m;
+  oob.F(3, 2) = 4;
+  try {
+    denoise(oob.V, oob.F);
+    FAIL() << "expected InvalidInput";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("face 3 refers to vertex 4, out of range [0, 4)"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(repair_mesh(oob), InvalidInput);
 }

@@ -1,5 +1,5 @@
-// Inpainting (inpaint.h): which holes are filled, CGAL fill + NMSTV feature recovery, and the
-// `msmesh inpaint` / `msmesh holes` commands. Hole finding: test_holes.cpp; the puncher:
+// Inpainting (inpaint.h): which holes are filled, CGAL fill + NMSTV feature recovery. The
+// `msmesh inpaint` / `msmesh holes` commands: cli/test_inpaint_cli.cpp. Hole finding: test_holes.cpp; the puncher:
 // test_punch_holes.cpp; the error figures: test_metrics.cpp.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -65,14 +65,6 @@ std::vector<double> cube_face_errors(const InpaintResult& r) {
     errs.push_back(std::acos(std::clamp(N.row(f).dot(t), -1.0, 1.0)) * 180 / kPi);
   }
   return errs;
-}
-
-fs::path temp_folder() {
-  std::random_device rd;
-  fs::path p =
-      fs::temp_directory_path() / ("msmesh_test_inpaint_" + std::to_string(::getpid()) + "_" + std::to_string(rd()));
-  fs::create_directories(p);
-  return p;
 }
 
 }  // namespace
@@ -269,39 +261,4 @@ TEST(InpaintSharedData, BeatsCgalFillAndFairOnACadPair) {
   EXPECT_LT(em.rms, ec.rms);
   EXPECT_LT(em.max, ec.max);
   EXPECT_TRUE(test::bit_identical(m.V.topRows(in.V.rows()), in.V));
-}
-
-// ---- command line ----
-
-TEST(InpaintCli, ListsFillsAndRefusesToOverwriteTheInput) {
-  const fs::path dir = temp_folder();
-  const Mesh cube = make_cube(8);
-  const std::string truth = (dir / "cube.obj").string(), holes = (dir / "holes.obj").string(),
-                    out = (dir / "out.obj").string();
-  write_mesh(truth, cube);
-  test::CliRun r = test::run_cli("holes '" + truth + "' -o '" + holes + "' --count 2 --radius 2 --seed 3 --on-features");
-  ASSERT_EQ(r.status, 0) << r.out;
-  EXPECT_NE(r.out.find("punched 2 of 2"), std::string::npos) << r.out;
-
-  r = test::run_cli("inpaint '" + holes + "' --list");
-  ASSERT_EQ(r.status, 0) << r.out;
-  EXPECT_NE(r.out.find("2 boundary loops"), std::string::npos) << r.out;
-
-  r = test::run_cli("inpaint '" + holes + "' -o '" + out + "' --truth '" + truth + "' --json -q");
-  ASSERT_EQ(r.status, 0) << r.out;
-  for (const char* part : {"\"filled\":2", "\"holes_found\":2", "\"errors\":{", "\"rms_e3\":"})
-    EXPECT_NE(r.out.find(part), std::string::npos) << part << " not in " << r.out;
-  EXPECT_TRUE(find_holes(read_mesh(out).V, read_mesh(out).F).empty());
-
-  r = test::run_cli("inpaint '" + holes + "' -o '" + holes + "'");
-  EXPECT_NE(r.status, 0);
-  EXPECT_NE(r.out.find("refusing to overwrite"), std::string::npos) << r.out;
-
-  r = test::run_cli("inpaint '" + truth + "' -o '" + out + "'");
-  ASSERT_EQ(r.status, 0) << r.out;
-  EXPECT_NE(r.out.find("no holes"), std::string::npos) << r.out;
-  const Mesh same = read_mesh(out);
-  EXPECT_EQ(same.F, cube.F);
-  EXPECT_LT((same.V - cube.V).cwiseAbs().maxCoeff(), 1e-12);
-  fs::remove_all(dir);
 }

@@ -29,15 +29,6 @@ Mesh two_triangles() {
   return m;
 }
 
-Mesh single_triangle() {
-  Mesh m;
-  m.V.resize(3, 3);
-  m.V << 0, 0, 0, 1, 0, 0, 0, 1, 0;
-  m.F.resize(1, 3);
-  m.F << 0, 1, 2;
-  return m;
-}
-
 }  // namespace
 
 TEST(Metrics, IdenticalMeshesGiveZero) {
@@ -123,7 +114,7 @@ TEST(Metrics, ShiftedPlaneGivesExactDistance) {
 }
 
 TEST(Metrics, PointToTriangleNotPointToVertex) {
-  const Mesh t = single_triangle();
+  const Mesh t = test::right_triangle();
   const SurfaceDistance sd(t.V, t.F);
   Eigen::MatrixXd P(4, 3);
   P << 1, 1, 0,       // beside the hypotenuse: nearest is its midpoint, not a vertex
@@ -184,7 +175,7 @@ TEST(Metrics, DegenerateTrianglesDoNotCrash) {
   EXPECT_NEAR(SurfaceDistance(line.V, line.F).distances(P)(0), 2.0, 1e-15);
 
   // And a degenerate face in the result is compared, not crashed on.
-  const Mesh truth = single_triangle();
+  const Mesh truth = test::right_triangle();
   Mesh flat = truth;
   flat.V.row(2) << 0.5, 0, 0;
   const Evaluation ev = evaluate(flat.V, flat.F, truth.V, truth.F);
@@ -194,7 +185,7 @@ TEST(Metrics, DegenerateTrianglesDoNotCrash) {
 }
 
 TEST(Metrics, InvalidInputsThrow) {
-  const Mesh t = single_triangle();
+  const Mesh t = test::right_triangle();
   EXPECT_THROW(SurfaceDistance(t.V, Eigen::MatrixXi(0, 3)), InvalidInput);
   const SurfaceDistance sd(t.V, t.F);
   Eigen::MatrixXd P(1, 3);

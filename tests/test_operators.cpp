@@ -1,4 +1,4 @@
-// Identities of the paper's operators (DESIGN.md §"Spaces and operators"): adjointness,
+// operators.h: identities of the paper's operators (DESIGN.md §"Spaces and operators"): adjointness,
 // ∇ of a constant is 0, Laplacians symmetric negative semidefinite in their inner products,
 // on a closed mesh, an open mesh with boundary and a mesh with a non-manifold edge.
 #include <gtest/gtest.h>
@@ -32,38 +32,6 @@ Eigen::MatrixXd random_field(Eigen::Index rows, Eigen::Index cols, unsigned seed
 }
 
 }  // namespace
-
-TEST(Topology, EdgeCountsAndSigns) {
-  const Mesh tet = test::tetrahedron();
-  const Topology t = build_topology(tet.F, tet.V.rows());
-  EXPECT_EQ(t.num_edges(), 6);
-  for (Eigen::Index e = 0; e < t.num_edges(); ++e) {
-    EXPECT_TRUE(t.edge_is_interior[e]);
-    EXPECT_LT(t.edges(e, 0), t.edges(e, 1));
-  }
-  // sgn(e, τ): each interior edge is walked forwards by edge_faces(e,0) and backwards by (e,1).
-  for (Eigen::Index f = 0; f < t.num_faces(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int e = t.face_edges(f, k);
-      const int from = tet.F(f, (k + 1) % 3);
-      EXPECT_EQ(t.face_edge_signs(f, k), from == t.edges(e, 0) ? 1 : -1);
-      EXPECT_EQ(t.edge_faces(e, t.face_edge_signs(f, k) > 0 ? 0 : 1), f);
-    }
-
-  const Mesh g = test::grid(3);
-  const Topology tg = build_topology(g.F, g.V.rows());
-  const TopologySummary s = summarize_topology(g.F, tg);
-  EXPECT_EQ(s.boundary_edges, 12);
-  EXPECT_EQ(s.boundary_loops.size(), 1u);
-  EXPECT_EQ(s.boundary_loops[0].size(), 12u);
-  EXPECT_EQ(s.components, 1);
-
-  const Mesh fin = test::fin();
-  const Topology tf = build_topology(fin.F, fin.V.rows());
-  const TopologySummary sf = summarize_topology(fin.F, tf);
-  EXPECT_EQ(sf.non_manifold_edges, 1);
-  EXPECT_GE(sf.non_manifold_vertices, 2);
-}
 
 TEST(Operators, GradientOfConstantIsZero) {
   for (const auto& c : cases()) {

@@ -22,6 +22,7 @@
 #include "msmesh/errors.h"
 #include "msmesh/read_mesh.h"
 #include "msmesh/write_mesh.h"
+#include "bad_files.h"
 #include "test_helpers.h"
 
 using namespace msmesh;
@@ -446,4 +447,57 @@ TEST(FuzzRegressions, SeedCorpusReadsValid) {
     }
   }
   EXPECT_GT(count, 20);
+}
+
+// ---------------------------------------------------------------------------------------------
+// From the catalogue of awkward meshes (docs/robustness.md); the same files through the CLI:
+// cli/test_broken_files_cli.cpp, cli/test_denoise_cli.cpp, cli/test_nothing_lost_cli.cpp.
+
+TEST(BrokenFiles, LibraryThrowsIoErrorNamingFileAndProblem) {
+  TempDir d;
+  for (const test::BadFile& b : test::bad_files()) {
+    const std::string path = d.file(b.name);
+    write_bytes(path, b.content);
+    try {
+      read_mesh(path);
+      ADD_FAILURE() << b.name << ": expected IoError";
+    } catch (const IoError& e) {
+      const std::string msg = e.what();
+      EXPECT_EQ(msg.rfind(path, 0), 0u) << b.name << ": " << msg;
+      EXPECT_NE(msg.find(b.problem), std::string::npos) << b.name << ": " << msg;
+    }
+  }
+}
+
+TEST(AwkwardMeshes, FacesRepeatingAVertexAreDroppedOnReading) {
+  TempDir d;
+  const std::string in = d.file("rep.obj");
+  write_bytes(in, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 2 4\nf 2 4 3\n");
+  Eigen::Index dropped = 0;
+  const Mesh m = read_mesh(in, &dropped);
+  EXPECT_EQ(dropped, 1);
+  EXPECT_EQ(m.F.rows(), 2);
+}
+
+TEST(NothingLost, HandWrittenObjWithColoursTexturesAndNormals) {
+  TempDir d;
+  const std::string in = d.file("hand.obj");
+  write_bytes(in,
+              "mtllib x.mtl\n"
+              "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nv 1 1 0.1 1 1 1\n"
+              "vt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\n"
+              "vn 0 0 1\n"
+              "f 1/1/1 2/2/1 4/4/1\nf 1/1/1 4/4/1 3/3/1\n");
+  const Mesh m = read_mesh(in);
+  ASSERT_EQ(m.vertex_colors.rows(), 4);
+  EXPECT_EQ(m.vertex_colors.row(1), Eigen::RowVector3d(0, 1, 0));
+  ASSERT_EQ(m.uv.rows(), 4);
+  EXPECT_EQ(m.uv.row(3), Eigen::RowVector2d(1, 1));
+  ASSERT_EQ(m.vertex_normals.rows(), 4);
+  EXPECT_EQ(m.vertex_normals.row(2), Eigen::RowVector3d(0, 0, 1));
+  // uv with seams (one vertex, two texture coordinates) cannot be per-vertex: dropped (`info`
+  // says so: cli/test_nothing_lost_cli.cpp).
+  write_bytes(d.file("seam.obj"), test::kObjWithUvSeams);
+  const Mesh s = read_mesh(d.file("seam.obj"));
+  EXPECT_EQ(s.uv.size(), 0);
 }

@@ -1,6 +1,6 @@
 // The two solvers of the constant systems (Cholesky factorisation and warm-started
 // conjugate gradients) give the same filtered normals and vertices, and the parallel loops
-// give bit-identical results whatever the number of threads (set_threads, msmesh --threads).
+// give bit-identical results whatever the number of threads (set_threads; its checks: test_threads.cpp; msmesh --threads: cli/test_threads_cli.cpp).
 #include <gtest/gtest.h>
 
 #ifdef _OPENMP
@@ -21,15 +21,6 @@ using namespace msmesh;
 
 namespace {
 
-Mesh noisy_cube(int n, double sigma = 0.2) {
-  Mesh m = make_cube(n);
-  NoiseOptions no;
-  no.sigma = sigma;
-  no.seed = 7;
-  m.V = add_noise(m.V, m.F, no);
-  return m;
-}
-
 NormalFilterResult filter_with(const Mesh& m, LinearSolver s, const char* preset = "cad") {
   NormalFilterOptions o = preset_options(preset).normals;
   o.solver = s;
@@ -40,7 +31,7 @@ NormalFilterResult filter_with(const Mesh& m, LinearSolver s, const char* preset
 }  // namespace
 
 TEST(Solver, ConjugateGradientsMatchCholeskyInTheNormalFilter) {
-  const Mesh m = noisy_cube(8);
+  const Mesh m = test::noisy_cube(8);
   for (const char* preset : {"cad", "smooth"}) {
     const NormalFilterResult a = filter_with(m, LinearSolver::Cholesky, preset);
     const NormalFilterResult b = filter_with(m, LinearSolver::CG, preset);
@@ -58,7 +49,7 @@ TEST(Solver, ConjugateGradientsMatchCholeskyInTheNormalFilter) {
 }
 
 TEST(Solver, TighterToleranceApproachesTheFactorisation) {
-  const Mesh m = noisy_cube(6);
+  const Mesh m = test::noisy_cube(6);
   const NormalFilterResult exact = filter_with(m, LinearSolver::Cholesky);
   double previous = 1e300;
   for (double tol : {1e-4, 1e-7, 1e-11}) {
@@ -74,7 +65,7 @@ TEST(Solver, TighterToleranceApproachesTheFactorisation) {
 }
 
 TEST(Solver, ConjugateGradientsMatchCholeskyInTheVertexUpdate) {
-  const Mesh m = noisy_cube(8);
+  const Mesh m = test::noisy_cube(8);
   const Mesh clean = make_cube(8);
   const Eigen::MatrixXd N = face_normals(clean.V, clean.F);
   for (const char* preset : {"cad", "smooth"}) {
@@ -94,7 +85,7 @@ TEST(Solver, ConjugateGradientsMatchCholeskyInTheVertexUpdate) {
 TEST(Solver, AutoUsesConjugateGradientsOnLargeMeshesUnlessWeightsSwitchTheDataTermOff) {
   // Inpainting gives new vertices ω₃ ≈ 0: the system is then badly conditioned and Auto
   // factors it; with plain weights Auto uses conjugate gradients from 40K vertices.
-  const Mesh m = noisy_cube(82);  // 80688 faces, 40346 vertices
+  const Mesh m = test::noisy_cube(82);  // 80688 faces, 40346 vertices
   ASSERT_GT(m.V.rows(), 40000);
   const Eigen::MatrixXd N = face_normals(make_cube(82).V, m.F);
   VertexUpdateOptions o;
@@ -114,7 +105,7 @@ TEST(Solver, AutoUsesConjugateGradientsOnLargeMeshesUnlessWeightsSwitchTheDataTe
 }
 
 TEST(Solver, BadSolverToleranceIsRejectedWithItsRange) {
-  const Mesh m = noisy_cube(2);
+  const Mesh m = test::noisy_cube(2);
   NormalFilterOptions o;
   o.solver_tolerance = 0;
   try {
@@ -136,7 +127,7 @@ TEST(Solver, ResultsDoNotDependOnTheThreadCount) {
   // Large enough for the per-face and per-edge loops to run in parallel (at least
   // kParallelMin = 32768 rows), for both solver paths: the factored N-step runs beside the
   // v-step on two threads (sequentially on one), CG splits its kernels over the threads.
-  const Mesh m = noisy_cube(53);
+  const Mesh m = test::noisy_cube(53);
   ASSERT_GE(m.F.rows(), 32768);
   const int threads = msmesh::threads();
   for (const LinearSolver solver : {LinearSolver::Auto, LinearSolver::CG}) {
@@ -163,7 +154,7 @@ TEST(Solver, ResultsDoNotDependOnTheThreadCount) {
 // solved when iteration k is the last (max_iterations or converged), and stopping on the
 // tolerance must give the iterate of the stopping iteration, whatever the solver.
 TEST(Solver, OneNStepPerIterationAlsoWhenStoppingEarly) {
-  const Mesh m = noisy_cube(6, 0.05);
+  const Mesh m = test::noisy_cube(6, 0.05);
   for (const LinearSolver solver : {LinearSolver::Cholesky, LinearSolver::CG}) {
     SCOPED_TRACE(solver == LinearSolver::Cholesky ? "cholesky" : "cg");
     NormalFilterOptions o = preset_options("cad").normals;
@@ -185,54 +176,5 @@ TEST(Solver, OneNStepPerIterationAlsoWhenStoppingEarly) {
     EXPECT_EQ(fixed.normals, early.normals);
     EXPECT_EQ(fixed.v, early.v);
     if (solver == LinearSolver::CG) EXPECT_EQ(fixed.n_solver_iterations, early.n_solver_iterations);
-  }
-}
-
-TEST(Threads, SetThreadsChecksItsArgumentAndRestoresTheDefault) {
-  const int initial = msmesh::threads();
-  EXPECT_GE(initial, 1);
-  for (const int bad : {-1, 4097}) {
-    try {
-      set_threads(bad);
-      FAIL() << "no error for " << bad;
-    } catch (const InvalidInput& e) {
-      EXPECT_NE(std::string(e.what()).find("threads: " + std::to_string(bad)), std::string::npos) << e.what();
-    }
-  }
-  EXPECT_EQ(msmesh::threads(), initial);  // a refused value changes nothing
-#ifdef _OPENMP
-  set_threads(1);
-  EXPECT_EQ(msmesh::threads(), 1);
-  set_threads(3);
-  EXPECT_EQ(msmesh::threads(), 3);
-  set_threads(0);  // the default again
-  EXPECT_EQ(msmesh::threads(), initial);
-#else
-  set_threads(3);
-  EXPECT_EQ(msmesh::threads(), 1);
-#endif
-}
-
-// msmesh --threads N, before or after the subcommand: the JSON says how many threads ran, the
-// output is the same bytes for one and two threads, and a bad value is refused.
-TEST(Threads, CommandLineOption) {
-  test::TempDir dir;
-  const std::string in = dir.file("in.obj"), a = dir.file("a.ply"), b = dir.file("b.ply");
-  const Mesh m = noisy_cube(6);
-  write_mesh(in, m);
-  const test::CliRun one = test::run_cli("--threads 1 denoise '" + in + "' -o '" + a + "' --preset cad --json");
-  ASSERT_EQ(one.status, 0) << one.out;
-  EXPECT_NE(one.out.find("\"threads\":1"), std::string::npos) << one.out;
-  const test::CliRun two = test::run_cli("denoise '" + in + "' -o '" + b + "' --preset cad --json --threads 2");
-  ASSERT_EQ(two.status, 0) << two.out;
-#ifdef _OPENMP
-  EXPECT_NE(two.out.find("\"threads\":2"), std::string::npos) << two.out;
-#endif
-  EXPECT_EQ(test::read_bytes(a), test::read_bytes(b));
-  EXPECT_FALSE(test::read_bytes(a).empty());
-  for (const char* bad : {"0", "-2", "many"}) {
-    const test::CliRun r = test::run_cli(std::string("--threads ") + bad + " info '" + in + "'");
-    EXPECT_NE(r.status, 0) << bad;
-    EXPECT_NE(r.out.find("--threads"), std::string::npos) << r.out;
   }
 }

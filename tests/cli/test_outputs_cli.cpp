@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "msmesh/io.h"
-#include "test_helpers.h"
+#include "cli_helpers.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include "msmesh/parameters.h"
 #include "msmesh/presets.h"
 #include "msmesh/segment.h"
-#include "test_helpers.h"
+#include "cli_helpers.h"
 
 using namespace msmesh;
 

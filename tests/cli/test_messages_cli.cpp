@@ -12,7 +12,7 @@
 #include "msmesh/io.h"
 #include "msmesh/metrics.h"
 #include "msmesh/topology.h"
-#include "test_helpers.h"
+#include "cli_helpers.h"
 
 using namespace msmesh;
 namespace fs = std::filesystem;

@@ -17,7 +17,7 @@
 #include "msmesh/noise.h"
 #include "msmesh/render.h"
 #include "msmesh/repair.h"
-#include "test_helpers.h"
+#include "cli_helpers.h"
 
 using namespace msmesh;
 namespace fs = std::filesystem;

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "msmesh/io.h"
-#include "test_helpers.h"
+#include "cli_helpers.h"
 
 using namespace msmesh;
 namespace fs = std::filesystem;

@@ -1,0 +1,131 @@
+// `msmesh denoise` on the awkward meshes of docs/robustness.md ("Awkward meshes"): each is
+// processed, keeping vertex count, face order and indices, with finite positions; `--repair`
+// repairs first and says what it did. The same meshes through the library: test_denoise.cpp
+// (AwkwardMeshes.*).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "cli_helpers.h"
+#include "msmesh/io.h"
+
+using namespace msmesh;
+using msmesh::test::run_cli;
+using msmesh::test::TempDir;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Runs `msmesh denoise in -o out` and checks success, then reads the result back.
+Mesh cli_denoise_ok(const TempDir& d, const Mesh& m, const std::string& in_name, const std::string& out_name,
+                    const std::string& extra = "") {
+  const std::string in = d.file(in_name), out = d.file(out_name);
+  write_mesh(in, m);
+  const auto run = run_cli("denoise " + in + " -o " + out + " -q " + extra);
+  EXPECT_EQ(run.status, 0) << run.out;
+  EXPECT_TRUE(fs::exists(out)) << run.out;
+  if (!fs::exists(out)) return {};
+  Mesh r = read_mesh(out);
+  EXPECT_EQ(r.V.rows(), m.V.rows());
+  EXPECT_EQ(r.F, m.F) << "face order and indices must be kept";
+  EXPECT_TRUE(r.V.allFinite());
+  return r;
+}
+
+}  // namespace
+
+TEST(AwkwardMeshesCli, NonManifoldEdgeIsDenoisedWithoutNaN) {
+  const Mesh m = test::fin();
+  TempDir d;
+  cli_denoise_ok(d, m, "fin.ply", "fin_out.ply");
+  cli_denoise_ok(d, m, "fin2.obj", "fin2_out.obj", "--method bilateral");
+}
+
+TEST(AwkwardMeshesCli, NonManifoldVertexIsDenoisedWithoutNaN) {
+  TempDir d;
+  cli_denoise_ok(d, test::noisy(test::bow_tie_tetrahedra(), 0.02), "bowtie.off", "bowtie_out.off");
+}
+
+TEST(AwkwardMeshesCli, DuplicateFacesAreDenoisedWithoutNaN) {
+  TempDir d;
+  cli_denoise_ok(d, test::noisy(test::grid_with_duplicate_faces(), 0.01), "dup.ply", "dup_out.ply");
+}
+
+TEST(AwkwardMeshes, DenoiseRepairOptionRepairsFirstAndSaysWhat) {
+  Mesh m = test::noisy(test::grid(6, 0.2), 0.01);
+  const Eigen::Index nf = m.F.rows();
+  m.F.conservativeResize(nf + 2, 3);
+  m.F.row(nf) = m.F.row(5);
+  m.F.row(nf + 1) << m.F(3, 0), m.F(3, 2), m.F(3, 1);
+  std::swap(m.F(8, 1), m.F(8, 2));
+  TempDir d;
+  const std::string in = d.file("messy.ply"), out = d.file("clean.ply");
+  write_mesh(in, m);
+  const auto run = run_cli("denoise " + in + " -o " + out + " -q --repair");
+  ASSERT_EQ(run.status, 0) << run.out;
+  EXPECT_NE(run.out.find("repair: removed duplicate faces: 2"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("repair: flipped faces to orient components consistently: 1"), std::string::npos) << run.out;
+  const Mesh r = read_mesh(out);
+  EXPECT_EQ(r.V.rows(), m.V.rows());
+  EXPECT_EQ(r.F, test::grid(6).F);
+  EXPECT_TRUE(r.V.allFinite());
+}
+
+TEST(AwkwardMeshesCli, ZeroAreaFacesAreDenoisedWithoutNaN) {
+  TempDir d;
+  cli_denoise_ok(d, test::grid_with_zero_area_faces(), "zero.ply", "zero_out.ply");
+}
+
+TEST(AwkwardMeshesCli, FacesRepeatingAVertexAreDroppedOnReadingAndReported) {
+  TempDir d;
+  const std::string in = d.file("rep.obj"), out = d.file("rep_out.obj");
+  test::write_bytes(in, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 2 4\nf 2 4 3\n");
+  const auto run = run_cli("denoise " + in + " -o " + out + " -q");
+  EXPECT_EQ(run.status, 0) << run.out;
+  EXPECT_NE(run.out.find("1 face"), std::string::npos) << run.out;  // the drop is reported
+  const auto info = run_cli("info " + in);
+  EXPECT_NE(info.out.find("dropped degenerate faces:      1"), std::string::npos) << info.out;
+}
+
+TEST(AwkwardMeshesCli, UnreferencedVerticesStayInPlaceAndInOrder) {
+  const Mesh m = test::grid_with_unreferenced_vertices();
+  const Eigen::Index n = m.V.rows() - 3;
+  TempDir d;
+  const Mesh out = cli_denoise_ok(d, m, "unref.ply", "unref_out.ply");
+  for (Eigen::Index i : {Eigen::Index(0), 1 + n / 2, n + 2}) EXPECT_EQ(out.V.row(i), m.V.row(i)) << "vertex " << i;
+  // Referenced vertices keep their order: each output vertex is closest to its own input.
+  for (Eigen::Index i = 0; i < m.V.rows(); ++i) {
+    Eigen::Index nearest;
+    (m.V.rowwise() - out.V.row(i)).rowwise().squaredNorm().minCoeff(&nearest);
+    EXPECT_EQ(nearest, i);
+  }
+}
+
+TEST(AwkwardMeshesCli, InconsistentOrientationIsDenoisedWithoutNaN) {
+  TempDir d;
+  cli_denoise_ok(d, test::grid_with_flipped_faces(), "flip.ply", "flip_out.ply");
+}
+
+TEST(AwkwardMeshesCli, EveryComponentIsDenoised) {
+  const Mesh m = test::two_noisy_grids();
+  const Eigen::Index na = test::grid(10).V.rows(), nb = test::grid(8).V.rows();
+  TempDir d;
+  const Mesh out = cli_denoise_ok(d, m, "two.ply", "two_out.ply");
+  EXPECT_LT(test::z_rms(out.V, 0, na), 0.5 * test::z_rms(m.V, 0, na));
+  EXPECT_LT(test::z_rms(out.V, na, nb), 0.5 * test::z_rms(m.V, na, nb));
+}
+
+TEST(AwkwardMeshesCli, OpenBoundariesAreKept) {
+  TempDir d;
+  cli_denoise_ok(d, test::grid_with_z_noise(), "open.obj", "open_out.obj");
+}
+
+TEST(AwkwardMeshesCli, SingleTriangle) {
+  const Mesh m = test::single_triangle();
+  TempDir d;
+  cli_denoise_ok(d, m, "one.stl", "one_out.stl");
+  cli_denoise_ok(d, m, "one.off", "one_out.off");
+  const auto info = run_cli("info " + d.file("one.off"));
+  EXPECT_EQ(info.status, 0) << info.out;
+}
