@@ -160,7 +160,7 @@ void run(const Args& a) {
   }
 }
 
-const Registrar reg("compare", 95, [](CLI::App& app) {
+const Registrar kRegistration("compare", 95, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("compare", "Render several meshes side by side into one PNG sheet (with error figures)");
   c->add_option("inputs", a->inputs, "Meshes to show, left to right")->required();

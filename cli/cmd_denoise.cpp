@@ -182,7 +182,7 @@ void run(const Args& a) {
   if (!a.report.empty()) std::cout << "  report written to " << a.report << "\n";
 }
 
-const Registrar reg("denoise", 50, [](CLI::App& app) {
+const Registrar kRegistration("denoise", 50, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("denoise", "Denoise a mesh: NMSTV normal filtering + vertex updating");
   c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();

@@ -76,7 +76,7 @@ void run(const Args& a) {
   std::cout << "    area-weighted RMS (Sun et al. 2007 E_v): " << fmt(d.area_weighted_rms * 1e3) << "\n";
 }
 
-const Registrar reg("eval", 40, [](CLI::App& app) {
+const Registrar kRegistration("eval", 40, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("eval", "Error figures of a result against a ground-truth mesh");
   c->add_option("result", a->result, "Result mesh (obj, off, ply, stl)")->required();

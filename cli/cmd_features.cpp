@@ -64,7 +64,7 @@ void run(const Args& a) {
             << fmt(length) << ", threshold " << fmt(a.threshold) << " on normalised v, " << fmt(seconds, 3) << " s\n";
 }
 
-const Registrar reg("features", 75, [](CLI::App& app) {
+const Registrar kRegistration("features", 75, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("features", "Extract feature lines where the NMSTV edge field is low");
   c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();

@@ -78,7 +78,7 @@ void run(const Args& a) {
     std::cout << "  note: no room for more holes (they are kept apart from each other and from boundaries)\n";
 }
 
-const Registrar reg("holes", 85, [](CLI::App& app) {
+const Registrar kRegistration("holes", 85, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("holes", "Punch holes (geodesic disks) into a mesh, for inpainting tests");
   c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();

@@ -99,7 +99,7 @@ void run(const Args& a) {
   if (notes.had_normals) std::cout << "  vertex normals:                yes (recomputed when vertices move)\n";
 }
 
-const Registrar reg("info", 10, [](CLI::App& app) {
+const Registrar kRegistration("info", 10, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("info", "Counts, defects (boundaries, non-manifold parts) and size of a mesh");
   c->add_option("input", a->input, "Mesh file (obj, off, ply, stl)")->required();

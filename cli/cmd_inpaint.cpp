@@ -212,7 +212,7 @@ void run(const Args& a) {
   if (!a.report.empty()) std::cout << "  report written to " << a.report << "\n";
 }
 
-const Registrar reg("inpaint", 80, [](CLI::App& app) {
+const Registrar kRegistration("inpaint", 80, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand(
       "inpaint", "Fill holes (CGAL fill-and-fair) and recover their sharp features with NMSTV (paper 6.2)");

@@ -47,7 +47,7 @@ void run(const Args& a) {
             << o.seed << ", " << moved << "/" << mesh.V.rows() << " vertices moved\n";
 }
 
-const Registrar reg("noise", 30, [](CLI::App& app) {
+const Registrar kRegistration("noise", 30, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand(
       "noise", "Add seeded noise as in the denoising literature (sigma in units of the mean edge length)");

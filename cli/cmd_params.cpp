@@ -92,7 +92,7 @@ void run(Args a) {
   show(a, denoise_parameters(), r.options, r.preset, r.reason());
 }
 
-const Registrar reg("params", 55, [](CLI::App& app) {
+const Registrar kRegistration("params", 55, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("params", "Print the parameters a preset (or, for a mesh, preset auto) gives");
   c->add_option("mesh", a->mesh, "Mesh to resolve --preset auto for (obj, off, ply, stl)");

@@ -68,7 +68,7 @@ void run(const Args& a) {
   }
 }
 
-const Registrar reg("render", 90, [](CLI::App& app) {
+const Registrar kRegistration("render", 90, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("render", "Render a mesh to a PNG picture (flat shading, colour maps)");
   c->add_option("input", a->input, "Mesh to render (obj, off, ply, stl)")->required();

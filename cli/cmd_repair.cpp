@@ -92,7 +92,7 @@ void run(const Args& a) {
     std::cout << "  (--remove-unreferenced drops unreferenced vertices; this renumbers the vertices)\n";
 }
 
-const Registrar reg("repair", 45, [](CLI::App& app) {
+const Registrar kRegistration("repair", 45, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand(
       "repair",

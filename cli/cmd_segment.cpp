@@ -145,7 +145,7 @@ void run(const Args& a) {
   if (!a.parts.empty()) std::cout << "  " << r.count << " parts written to " << a.parts << "/part_NNN.obj\n";
 }
 
-const Registrar reg("segment", 70, [](CLI::App& app) {
+const Registrar kRegistration("segment", 70, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("segment", "Segment a mesh into piecewise-smooth parts (NMSTV edge field + multicut)");
   c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();

@@ -48,7 +48,7 @@ void run(const Args& a) {
             << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces, " << patches(patch_count) << "\n";
 }
 
-const Registrar reg("shape", 20, [](CLI::App& app) {
+const Registrar kRegistration("shape", 20, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("shape", "Write a built-in procedural test mesh (msmesh shape --list shows the names)");
   c->add_option("name", a->name, "Shape name; --list shows them");

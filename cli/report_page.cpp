@@ -257,7 +257,7 @@ std::string plot_svg(const ReportPlot& p) {
       o << "<circle cx=\"" << svg_num(px(1)) << "\" cy=\"" << svg_num(py(values[0])) << "\" r=\"3\" fill=\"" << color
         << "\"/>";
     o << "<path fill=\"none\" stroke=\"" << color << "\" stroke-width=\"2\" d=\"" << path << "\"/>";
-    const double lx = ml + 4 + 250.0 * static_cast<double>(s % 2), ly = H - 10 - 0.0 * static_cast<double>(s / 2);
+    const double lx = ml + 4 + 250.0 * static_cast<double>(s % 2), ly = H - 10;  // legends of the first two series
     if (s < 2) {
       o << "<line x1=\"" << lx << "\" x2=\"" << lx + 18 << "\" y1=\"" << ly - 4 << "\" y2=\"" << ly - 4
         << "\" stroke=\"" << color << "\" stroke-width=\"3\"/>";

@@ -37,11 +37,11 @@ namespace fs = std::filesystem;
 
 // ---- The registry of temporary files and folders, for the signal handler -----------------
 
-enum SlotState : int { kFree = 0, kFile = 1, kFolder = 2 };
+enum SlotState : int { Free = 0, File = 1, Folder = 2 };
 
 struct TempSlot {
   std::atomic<TempSlot*> next{nullptr};
-  std::atomic<int> state{kFree};
+  std::atomic<int> state{Free};
   char path[PATH_MAX] = {};
 };
 
@@ -57,7 +57,7 @@ class TempRegistration {
     if (ec || s.size() >= PATH_MAX) throw IoError(p.string() + ": path too long");
     std::lock_guard<std::mutex> lock(g_slots_mutex);
     for (TempSlot* t = g_slots.load(); t && !slot_; t = t->next.load())
-      if (t->state.load() == kFree) slot_ = t;
+      if (t->state.load() == Free) slot_ = t;
     if (!slot_) {
       slot_ = new TempSlot;
       slot_->next.store(g_slots.load());
@@ -66,7 +66,7 @@ class TempRegistration {
     std::memcpy(slot_->path, s.c_str(), s.size() + 1);  // while free, the handler skips the slot
     slot_->state.store(kind);
   }
-  ~TempRegistration() { slot_->state.store(kFree); }
+  ~TempRegistration() { slot_->state.store(Free); }
   TempRegistration(const TempRegistration&) = delete;
   TempRegistration& operator=(const TempRegistration&) = delete;
 
@@ -78,10 +78,10 @@ class TempRegistration {
 extern "C" void remove_temporaries_and_reraise(int sig) {
   const int saved_errno = errno;
   for (TempSlot* t = g_slots.load(); t; t = t->next.load())
-    if (t->state.load() == kFile) ::unlink(t->path);
+    if (t->state.load() == File) ::unlink(t->path);
   for (int pass = 0; pass < 16; ++pass)  // nested folders: the inner ones go first
     for (TempSlot* t = g_slots.load(); t; t = t->next.load())
-      if (t->state.load() == kFolder) ::rmdir(t->path);
+      if (t->state.load() == Folder) ::rmdir(t->path);
   ::signal(sig, SIG_DFL);
   ::raise(sig);  // blocked while the handler runs: delivered, with the default action, on return
   errno = saved_errno;
@@ -230,7 +230,7 @@ class Staged {
       std::string name = "." + target_.filename().string() + suffix;
       if (name.size() > kNameMax) name = ".msmesh" + suffix;  // a long target name: keep within NAME_MAX
       const fs::path tmp = dir / name;
-      auto registration = std::make_unique<TempRegistration>(tmp, kFile);  // before the file exists
+      auto registration = std::make_unique<TempRegistration>(tmp, File);  // before the file exists
       // Mode 0666: the umask decides a new file's permissions, as for a plain ofstream.
       const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
       if (fd >= 0) {
@@ -421,7 +421,7 @@ void create_output_folder(const std::string& dir) {
       throw IoError("cannot create the folder '" + dir + "': " + std::strerror(errno));
     }
     if (t_active) {
-      t_active->folders.push_back(std::make_unique<TempRegistration>(*it, kFolder));
+      t_active->folders.push_back(std::make_unique<TempRegistration>(*it, Folder));
       t_active->folder_paths.push_back(*it);
     }
   }

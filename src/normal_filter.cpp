@@ -171,7 +171,7 @@ class NormalFilterRun {
   Eigen::VectorXd fid_weight_;       // 2α s_f (floored) per face
   std::optional<detail::ConstantSystem> n_system_;
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> gt_weight_;  // Gᵀ L per face
-  Eigen::VectorXd Kv_diag_, v_rhs_, v_diag_;  // diagonal of 2βε Dᵀ L_W D; the v-step's b and diagonal
+  Eigen::VectorXd smooth_diag_, v_rhs_, v_diag_;  // diagonal of 2βε Dᵀ L_W D; the v-step's b and diagonal
   std::optional<detail::BlockPcg> v_system_;  // the v-step matrix; its diagonal is set per iteration
   Rows N0r_, N_, N_prev_, N_next_, rhs_, q_, lambda_;
   Eigen::VectorXd v_, w_;
@@ -202,7 +202,7 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
   // line l couples its entering and leaving edges), stored with explicit diagonal entries.
   {
     const SparseMatrix Kv = edge_smoothness_matrix(topo_, ops_.line_lengths, 2.0 * o.beta * o.epsilon);
-    Kv_diag_ = Kv.diagonal();
+    smooth_diag_ = Kv.diagonal();
     // Few sweeps per solve (strongly diagonally dominant): not worth a reordering.
     v_system_.emplace(Kv, /*reorder=*/false);
   }
@@ -328,7 +328,7 @@ double NormalFilterRun::edge_pass() {
       lambda_.row(e) += o.relaxation * o.penalty * r;
       q_.row(e) = o.penalty * pe + lambda_.row(e);
       s[0] += len(e) * r.squaredNorm();
-      v_diag_(e) = Kv_diag_(e) + len(e) * (2 * o.gamma * w_(e) * pe_norm + edge_beta_(e) * o.beta / (2 * o.epsilon));
+      v_diag_(e) = smooth_diag_(e) + len(e) * (2 * o.gamma * w_(e) * pe_norm + edge_beta_(e) * o.beta / (2 * o.epsilon));
       w_(e) = irla_weight(pe_norm, o);
     }
   })[0];
