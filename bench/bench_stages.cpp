@@ -5,10 +5,10 @@
 #include <map>
 
 #include "msmesh/denoise.h"
-#include "msmesh/presets.h"
 #include "msmesh/geometry.h"
 #include "msmesh/noise.h"
 #include "msmesh/operators.h"
+#include "msmesh/presets.h"
 #include "msmesh/shapes.h"
 #include "msmesh/topology.h"
 
@@ -80,8 +80,22 @@ void StageFullDenoise(benchmark::State& state) {
 
 BENCHMARK(StageOperators)->Arg(29)->Arg(91)->Arg(289)->Unit(benchmark::kMillisecond);
 // (n, iterations): 1 iteration ≈ set-up + factorisation; 30 − 1 gives the per-iteration cost.
-BENCHMARK(StageNormalFilter)->Args({29, 1})->Args({29, 30})->Args({91, 1})->Args({91, 30})->Args({289, 1})->Args({289, 30})
-    ->Unit(benchmark::kMillisecond)->Iterations(1);
-BENCHMARK(StageVertexUpdate)->Args({29, 1})->Args({29, 30})->Args({91, 1})->Args({91, 30})->Args({289, 1})->Args({289, 30})
-    ->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(StageNormalFilter)
+    ->Args({29, 1})
+    ->Args({29, 30})
+    ->Args({91, 1})
+    ->Args({91, 30})
+    ->Args({289, 1})
+    ->Args({289, 30})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+BENCHMARK(StageVertexUpdate)
+    ->Args({29, 1})
+    ->Args({29, 30})
+    ->Args({91, 1})
+    ->Args({91, 30})
+    ->Args({289, 1})
+    ->Args({289, 30})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 BENCHMARK(StageFullDenoise)->Arg(29)->Arg(91)->Arg(289)->Unit(benchmark::kMillisecond)->Iterations(1);

@@ -30,9 +30,7 @@
 
 namespace {
 
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
 double triad_gb_s(size_t n, int repeats) {
   std::vector<double> a(n, 0.0), b(n, 1.0), c(n, 2.0);

@@ -17,11 +17,11 @@
 #include <string>
 
 #include "msmesh/denoise.h"
-#include "msmesh/presets.h"
 #include "msmesh/geometry.h"
 #include "msmesh/io.h"
 #include "msmesh/noise.h"
 #include "msmesh/operators.h"
+#include "msmesh/presets.h"
 #include "msmesh/shapes.h"
 #include "msmesh/topology.h"
 
@@ -33,9 +33,7 @@ using namespace msmesh;
 
 namespace {
 
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
 double peak_rss_mb() {
   rusage ru{};
@@ -62,11 +60,16 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (i + 1 >= argc) usage();
-    if (a == "--faces") target = std::atof(argv[++i]);
-    else if (a == "--shape") shape = argv[++i];
-    else if (a == "--preset") preset = argv[++i];
-    else if (a == "--io") io_dir = argv[++i];
-    else usage();
+    if (a == "--faces")
+      target = std::atof(argv[++i]);
+    else if (a == "--shape")
+      shape = argv[++i];
+    else if (a == "--preset")
+      preset = argv[++i];
+    else if (a == "--io")
+      io_dir = argv[++i];
+    else
+      usage();
   }
   if (!(target >= 12)) usage();
 

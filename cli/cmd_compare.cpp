@@ -6,7 +6,8 @@
 #include <sstream>
 
 #include "command.h"
-#include "output_plan.h"
+#include "field_files.h"
+#include "figures.h"
 #include "msmesh/color_bar.h"
 #include "msmesh/errors.h"
 #include "msmesh/image.h"
@@ -14,8 +15,7 @@
 #include "msmesh/metrics.h"
 #include "msmesh/render.h"
 #include "msmesh/text.h"
-#include "field_files.h"
-#include "figures.h"
+#include "output_plan.h"
 #include "run_reports.h"
 
 namespace msmesh::cli {
@@ -123,10 +123,14 @@ void run(const Args& a) {
     if (!a.truth.empty()) {
       std::string fig;
       if (ev[i].same_connectivity)
-        fig = "MSAE " + format_tick(ev[i].normals.msae * 1e3) + " \xC3\x97" "1e-3, " +
+        fig = "MSAE " + format_tick(ev[i].normals.msae * 1e3) +
+              " \xC3\x97"
+              "1e-3, " +
               format_tick(ev[i].normals.mean_angle_deg) + "\xC2\xB0 mean";
       else
-        fig = "RMS dist. " + format_tick(ev[i].distances.rms * 1e3) + " \xC3\x97" "1e-3";
+        fig = "RMS dist. " + format_tick(ev[i].distances.rms * 1e3) +
+              " \xC3\x97"
+              "1e-3";
       const int s2 = text_width(fig, scale) <= ro.width - 8 ? scale : 1;
       centered(label, 2 * scale + text_height(scale) + 4 * scale, fig, s2, muted);
     }
@@ -152,8 +156,8 @@ void run(const Args& a) {
       for (size_t i = 0; i < n; ++i) {
         std::cout << "  " << captions[i] << ": ";
         if (ev[i].same_connectivity)
-          std::cout << "MSAE " << fmt(ev[i].normals.msae * 1e3) << " e-3, mean angle " << fmt(ev[i].normals.mean_angle_deg)
-                    << " deg, flipped " << ev[i].normals.flipped << "\n";
+          std::cout << "MSAE " << fmt(ev[i].normals.msae * 1e3) << " e-3, mean angle "
+                    << fmt(ev[i].normals.mean_angle_deg) << " deg, flipped " << ev[i].normals.flipped << "\n";
         else
           std::cout << "distance RMS " << fmt(ev[i].distances.rms * 1e3) << " e-3 (faces differ from the truth)\n";
       }
@@ -162,7 +166,8 @@ void run(const Args& a) {
 
 const Registrar kRegistration("compare", 95, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
-  CLI::App* c = app.add_subcommand("compare", "Render several meshes side by side into one PNG sheet (with error figures)");
+  CLI::App* c =
+      app.add_subcommand("compare", "Render several meshes side by side into one PNG sheet (with error figures)");
   c->add_option("inputs", a->inputs, "Meshes to show, left to right")->required();
   c->add_option("-o,--output", a->output, "Output .png (- for standard output)")->required();
   c->add_option("--truth", a->truth, "Ground truth: print MSAE (x1e-3) and mean angle under each panel");

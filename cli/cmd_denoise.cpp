@@ -4,22 +4,22 @@
 #include <memory>
 
 #include "command.h"
+#include "field_files.h"
+#include "figures.h"
 #include "json.h"
 #include "msmesh/denoise.h"
-#include "msmesh/parameters.h"
-#include "msmesh/presets.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/io.h"
 #include "msmesh/memory.h"
 #include "msmesh/metrics.h"
+#include "msmesh/parameters.h"
+#include "msmesh/presets.h"
 #include "msmesh/repair.h"
 #include "msmesh/threads.h"
 #include "msmesh/topology.h"
-#include "parameter_options.h"
-#include "field_files.h"
-#include "figures.h"
 #include "output_plan.h"
+#include "parameter_options.h"
 #include "run_reports.h"
 #include "usage_error.h"
 
@@ -29,7 +29,7 @@ namespace {
 struct Args {
   std::string input, output, truth, field, preset = default_preset(), method = "nmstv", solver = "auto";
   bool json = false, quiet = false, in_place = false, ascii = false, repair = false;
-  std::string report;  // --report: HTML report (cli/run_reports.h)
+  std::string report;                                            // --report: HTML report (cli/run_reports.h)
   std::unique_ptr<ParameterOptions<DenoiseOptions>> parameters;  // --alpha ... (parameters.h)
 };
 
@@ -48,7 +48,8 @@ void run(const Args& a) {
     throw UsageError("--save-field needs --method nmstv or mstv (bilateral has no edge field)");
   OutputPlan plan;  // every file of the run, checked before any work; outputs committed together
   plan.input(a.input).input(a.truth, "--truth").in_place(a.in_place);
-  plan.output(a.output, OutputKind::Mesh, "-o").output(a.field, OutputKind::Text, "--save-field")
+  plan.output(a.output, OutputKind::Mesh, "-o")
+      .output(a.field, OutputKind::Text, "--save-field")
       .output(a.report, OutputKind::Text, "--report");
   plan.begin();
   const auto t_read0 = std::chrono::steady_clock::now();
@@ -72,8 +73,9 @@ void run(const Args& a) {
                                          : a.solver == "cg"     ? LinearSolver::CG
                                                                 : LinearSolver::Auto;
   o.validate();
-  check_memory(denoise_memory_estimate(mesh.V.rows(), mesh.F.rows(), o), a.input + ": denoising " +
-               std::to_string(mesh.V.rows()) + " vertices and " + std::to_string(mesh.F.rows()) + " faces");
+  check_memory(denoise_memory_estimate(mesh.V.rows(), mesh.F.rows(), o),
+               a.input + ": denoising " + std::to_string(mesh.V.rows()) + " vertices and " +
+                   std::to_string(mesh.F.rows()) + " faces");
 
   Mesh truth;
   if (!a.truth.empty()) truth = read_mesh(a.truth);
@@ -98,8 +100,8 @@ void run(const Args& a) {
     ev_out = evaluate(out.V, out.F, truth.V, truth.F);
   }
   if (!a.report.empty())
-    write_denoise_report(a.report, a.input, mesh, out.V, a.truth.empty() ? nullptr : &truth, a.method, preset.preset, o, r,
-                         ev_in, ev_out);
+    write_denoise_report(a.report, a.input, mesh, out.V, a.truth.empty() ? nullptr : &truth, a.method, preset.preset, o,
+                         r, ev_in, ev_out);
   plan.commit();
 
   if (a.json) {
@@ -116,8 +118,10 @@ void run(const Args& a) {
       j.add("repair", done);
     }
     j.add("parameters", parameters_json(denoise_parameters(), o)).add("solver", a.solver);
-    j.add("seconds_read", t_read).add("seconds_normals", r.seconds_normals)
-        .add("seconds_vertices", r.seconds_vertices).add("seconds_write", t_write)
+    j.add("seconds_read", t_read)
+        .add("seconds_normals", r.seconds_normals)
+        .add("seconds_vertices", r.seconds_vertices)
+        .add("seconds_write", t_write)
         .add("threads", threads());
     j.add("normal_iterations", r.normal_report.iterations).add("vertex_iterations", r.vertex_report.iterations);
     j.add("n_step_cg_sweeps", r.normal_report.n_solver_iterations)
@@ -129,9 +133,11 @@ void run(const Args& a) {
       auto fig = [](const Evaluation& e) {
         Json k;
         if (e.same_connectivity)
-          k.add("msae_e3", e.normals.msae * 1e3).add("mean_angle_deg", e.normals.mean_angle_deg)
+          k.add("msae_e3", e.normals.msae * 1e3)
+              .add("mean_angle_deg", e.normals.mean_angle_deg)
               .add("flipped", static_cast<long long>(e.normals.flipped));
-        k.add("dist_mean_e3", e.distances.mean * 1e3).add("dist_rms_e3", e.distances.rms * 1e3)
+        k.add("dist_mean_e3", e.distances.mean * 1e3)
+            .add("dist_rms_e3", e.distances.rms * 1e3)
             .add("dist_max_e3", e.distances.max * 1e3);
         return k;
       };
@@ -141,8 +147,8 @@ void run(const Args& a) {
     return;
   }
   if (!a.quiet)
-    std::cout << "denoised " << a.input << " -> " << a.output << " (" << mesh.V.rows() << " vertices, "
-              << mesh.F.rows() << " faces)\n";
+    std::cout << "denoised " << a.input << " -> " << a.output << " (" << mesh.V.rows() << " vertices, " << mesh.F.rows()
+              << " faces)\n";
   if (notes.dropped_degenerate > 0)
     std::cout << "  note: " << notes.dropped_degenerate << " face(s) repeating a vertex were dropped on reading\n";
   for (const std::string& line : repairs) std::cout << "  repair: " << line << "\n";
@@ -156,11 +162,11 @@ void run(const Args& a) {
   }
   std::cout << "\n";
   if (o.method != DenoiseMethod::Bilateral) {
-    std::cout << "  normal filtering: " << r.normal_report.iterations << " iterations, "
-              << fmt(r.seconds_normals, 3) << " s, residual |p - grad N| "
+    std::cout << "  normal filtering: " << r.normal_report.iterations << " iterations, " << fmt(r.seconds_normals, 3)
+              << " s, residual |p - grad N| "
               << fmt(r.normal_report.residual_history.empty() ? 0.0 : r.normal_report.residual_history.back()) << "\n";
-    std::cout << "  vertex update:    " << r.vertex_report.iterations << " iterations, "
-              << fmt(r.seconds_vertices, 3) << " s\n";
+    std::cout << "  vertex update:    " << r.vertex_report.iterations << " iterations, " << fmt(r.seconds_vertices, 3)
+              << " s\n";
   } else {
     std::cout << "  bilateral normals " << fmt(r.seconds_normals, 3) << " s, vertex update "
               << fmt(r.seconds_vertices, 3) << " s\n";
@@ -172,8 +178,8 @@ void run(const Args& a) {
       if (e.same_connectivity)
         std::cout << " MSAE " << fmt(e.normals.msae * 1e3) << " e-3, mean angle " << fmt(e.normals.mean_angle_deg)
                   << " deg, flipped " << e.normals.flipped << ",";
-      std::cout << " distance mean/RMS/max " << fmt(e.distances.mean * 1e3) << "/" << fmt(e.distances.rms * 1e3)
-                << "/" << fmt(e.distances.max * 1e3) << " e-3 of bbox diagonal\n";
+      std::cout << " distance mean/RMS/max " << fmt(e.distances.mean * 1e3) << "/" << fmt(e.distances.rms * 1e3) << "/"
+                << fmt(e.distances.max * 1e3) << " e-3 of bbox diagonal\n";
     };
     line("input: ", ev_in);
     line("result:", ev_out);
@@ -199,11 +205,13 @@ const Registrar kRegistration("denoise", 50, [](CLI::App& app) {
       ->capture_default_str();
   std::vector<std::pair<std::string, DenoiseOptions>> defaults;
   for (const std::string& name : preset_names()) defaults.emplace_back(name, preset_options(name));
-  a->parameters = std::make_unique<ParameterOptions<DenoiseOptions>>(c, denoise_parameters(), defaults,
-                                                                     "(override the preset)");
+  a->parameters =
+      std::make_unique<ParameterOptions<DenoiseOptions>>(c, denoise_parameters(), defaults, "(override the preset)");
   c->add_option("--truth", a->truth, "Ground-truth mesh: print error figures of input and result");
-  c->add_option("--save-field", a->field, "Write the edge field v (.txt: 'i j v' per edge; .ply: coloured edges; -: text to standard output)");
-  c->add_option("--report", a->report, "Write an HTML report: 3D viewer, parameters, errors, convergence plots (-: standard output)");
+  c->add_option("--save-field", a->field,
+                "Write the edge field v (.txt: 'i j v' per edge; .ply: coloured edges; -: text to standard output)");
+  c->add_option("--report", a->report,
+                "Write an HTML report: 3D viewer, parameters, errors, convergence plots (-: standard output)");
   c->add_option("--solver", a->solver,
                 "Linear solver of the fixed systems: auto (Cholesky below 80K faces, conjugate gradients above), "
                 "cholesky, cg")

@@ -44,13 +44,16 @@ void run(const Args& a) {
     if (dropped_truth) j.add("truth_dropped_degenerate_faces", static_cast<long long>(dropped_truth));
     j.add("same_connectivity", ev.same_connectivity);
     if (ev.same_connectivity) {
-      j.add("msae", ev.normals.msae).add("msae_e3", ev.normals.msae * 1e3)
+      j.add("msae", ev.normals.msae)
+          .add("msae_e3", ev.normals.msae * 1e3)
           .add("mean_angle_deg", ev.normals.mean_angle_deg)
           .add("flipped", static_cast<long long>(ev.normals.flipped));
     } else {
       j.add("normal_metrics", why);
     }
-    j.add("dist_mean_e3", d.mean * 1e3).add("dist_rms_e3", d.rms * 1e3).add("dist_max_e3", d.max * 1e3)
+    j.add("dist_mean_e3", d.mean * 1e3)
+        .add("dist_rms_e3", d.rms * 1e3)
+        .add("dist_max_e3", d.max * 1e3)
         .add("dist_area_weighted_rms_e3", d.area_weighted_rms * 1e3);
     std::cout << j.str() << "\n";
     return;
@@ -71,8 +74,7 @@ void run(const Args& a) {
     std::cout << "  " << why << "; only distances are reported\n";
   }
   std::cout << "  vertex-to-truth-surface distance (x 1e-3 of the truth's bounding-box diagonal):\n";
-  std::cout << "    mean " << fmt(d.mean * 1e3) << ", RMS " << fmt(d.rms * 1e3) << ", max " << fmt(d.max * 1e3)
-            << "\n";
+  std::cout << "    mean " << fmt(d.mean * 1e3) << ", RMS " << fmt(d.rms * 1e3) << ", max " << fmt(d.max * 1e3) << "\n";
   std::cout << "    area-weighted RMS (Sun et al. 2007 E_v): " << fmt(d.area_weighted_rms * 1e3) << "\n";
 }
 

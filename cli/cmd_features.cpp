@@ -3,15 +3,15 @@
 #include <iostream>
 
 #include "command.h"
-#include "output_plan.h"
-#include "number_option.h"
 #include "json.h"
 #include "msmesh/denoise.h"
-#include "msmesh/presets.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/normal_filter.h"
+#include "msmesh/presets.h"
 #include "msmesh/segment.h"
+#include "number_option.h"
+#include "output_plan.h"
 
 namespace msmesh::cli {
 namespace {
@@ -52,8 +52,11 @@ void run(const Args& a) {
     Json j;
     j.add("input", a.input).add("output", a.output).add("preset", a.preset).add("denoised", a.denoise_first);
     j.add("threshold", a.threshold).add("min_edges", a.min_edges);
-    j.add("polylines", static_cast<long long>(lines.size())).add("closed_loops", closed).add("edges", edges)
-        .add("length", length).add("seconds", seconds);
+    j.add("polylines", static_cast<long long>(lines.size()))
+        .add("closed_loops", closed)
+        .add("edges", edges)
+        .add("length", length)
+        .add("seconds", seconds);
     std::cout << j.str() << "\n";
     return;
   }

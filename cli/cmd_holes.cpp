@@ -4,12 +4,12 @@
 #include <sstream>
 
 #include "command.h"
-#include "output_plan.h"
-#include "number_option.h"
 #include "json.h"
 #include "msmesh/errors.h"
-#include "msmesh/punch_holes.h"
 #include "msmesh/io.h"
+#include "msmesh/punch_holes.h"
+#include "number_option.h"
+#include "output_plan.h"
 
 namespace msmesh::cli {
 namespace {
@@ -32,8 +32,9 @@ void run(const Args& a) {
   const PunchResult r =
       punch_holes(mesh.V, mesh.F, a.count, a.radius, static_cast<std::uint64_t>(a.seed), a.on_features);
   if (r.F.rows() == 0)
-    throw InvalidInput("holes: the holes (radius " + fmt(a.radius) + " mean edge lengths) would remove every face of '" +
-                       a.input + "'; nothing written (use a smaller --radius or --count)");
+    throw InvalidInput("holes: the holes (radius " + fmt(a.radius) +
+                       " mean edge lengths) would remove every face of '" + a.input +
+                       "'; nothing written (use a smaller --radius or --count)");
   Mesh out;
   out.V = r.V;
   out.F = r.F;
@@ -57,8 +58,13 @@ void run(const Args& a) {
   plan.commit();
   if (a.json) {
     Json j;
-    j.add("input", a.input).add("output", a.output).add("requested", a.count).add("punched", r.punched)
-        .add("radius", a.radius).add("seed", a.seed).add("on_features", a.on_features)
+    j.add("input", a.input)
+        .add("output", a.output)
+        .add("requested", a.count)
+        .add("punched", r.punched)
+        .add("radius", a.radius)
+        .add("seed", a.seed)
+        .add("on_features", a.on_features)
         .add("removed_faces", static_cast<long long>(mesh.F.rows() - r.F.rows()))
         .add("removed_vertices", static_cast<long long>(mesh.V.rows() - r.V.rows()));
     std::vector<double> centers(r.centers.begin(), r.centers.end());
@@ -68,8 +74,8 @@ void run(const Args& a) {
   }
   if (a.quiet) return;
   std::cout << "punched " << r.punched << " of " << a.count << " holes (radius " << fmt(a.radius)
-            << " mean edge lengths" << (a.on_features ? ", on sharp features" : "") << ", seed " << a.seed << "): "
-            << a.input << " -> " << a.output << "\n";
+            << " mean edge lengths" << (a.on_features ? ", on sharp features" : "") << ", seed " << a.seed
+            << "): " << a.input << " -> " << a.output << "\n";
   std::cout << "  removed " << (mesh.F.rows() - r.F.rows()) << " faces and " << (mesh.V.rows() - r.V.rows())
             << " vertices";
   if (!a.map.empty()) std::cout << "; vertex index map written to " << a.map;
@@ -85,7 +91,8 @@ const Registrar kRegistration("holes", 85, [](CLI::App& app) {
   c->add_option("-o,--output", a->output, "Output mesh with holes")->required();
   using T = ParameterType;
   add_number_option(c, "--count", a->count, cli_number("holes", "count", T::Integer, {1, 100000}), "Number of holes");
-  add_number_option(c, "--radius", a->radius, cli_number("holes", "radius", T::Real, {0, 1e6, true, false}, "mean edge lengths"),
+  add_number_option(c, "--radius", a->radius,
+                    cli_number("holes", "radius", T::Real, {0, 1e6, true, false}, "mean edge lengths"),
                     "Hole radius (geodesic, along edges)");
   add_number_option(c, "--seed", a->seed, cli_number("holes", "seed", T::Integer, {0, kLargestExactInteger}),
                     "Random seed (same seed, same holes)");

@@ -95,7 +95,8 @@ void run(const Args& a) {
             << "  dropped degenerate faces:      " << dropped << "\n";
   if (mesh.vertex_colors.size() > 0) std::cout << "  vertex colours:                yes\n";
   if (mesh.uv.size() > 0) std::cout << "  texture coordinates:           yes (per vertex)\n";
-  if (notes.uv_dropped) std::cout << "  texture coordinates:           with seams (per corner): not read, not carried over\n";
+  if (notes.uv_dropped)
+    std::cout << "  texture coordinates:           with seams (per corner): not read, not carried over\n";
   if (notes.had_normals) std::cout << "  vertex normals:                yes (recomputed when vertices move)\n";
 }
 

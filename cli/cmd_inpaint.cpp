@@ -5,18 +5,18 @@
 #include <sstream>
 
 #include "command.h"
-#include "output_plan.h"
-#include "number_option.h"
-#include "json.h"
-#include "msmesh/errors.h"
-#include "msmesh/inpaint.h"
-#include "msmesh/metrics.h"
-#include "msmesh/geometry.h"
-#include "msmesh/io.h"
-#include "msmesh/parameters.h"
-#include "parameter_options.h"
 #include "field_files.h"
 #include "figures.h"
+#include "json.h"
+#include "msmesh/errors.h"
+#include "msmesh/geometry.h"
+#include "msmesh/inpaint.h"
+#include "msmesh/io.h"
+#include "msmesh/metrics.h"
+#include "msmesh/parameters.h"
+#include "number_option.h"
+#include "output_plan.h"
+#include "parameter_options.h"
 #include "run_reports.h"
 #include "usage_error.h"
 
@@ -27,15 +27,18 @@ struct Args {
   std::string input, output, truth;
   std::vector<int> holes;
   bool list = false, json = false, quiet = false, in_place = false, ascii = false;
-  std::string report;  // --report: HTML report (cli/run_reports.h)
+  std::string report;                                            // --report: HTML report (cli/run_reports.h)
   std::unique_ptr<ParameterOptions<InpaintOptions>> parameters;  // every InpaintOptions number (parameters.h)
 };
 
 const char* action_name(HoleAction a) {
   switch (a) {
-    case HoleAction::Filled: return "filled";
-    case HoleAction::Skipped: return "skipped";
-    case HoleAction::Failed: return "failed";
+    case HoleAction::Filled:
+      return "filled";
+    case HoleAction::Skipped:
+      return "skipped";
+    case HoleAction::Failed:
+      return "failed";
   }
   return "?";
 }
@@ -48,8 +51,13 @@ std::string hole_note(const Hole& h) {
 
 Json hole_json(int i, const Hole& h) {
   Json j;
-  j.add("index", i).add("edges", h.edges).add("diameter", h.diameter).add("length", h.length)
-      .add("component", h.component).add("outer_boundary", h.outer_boundary).add("simple", h.simple);
+  j.add("index", i)
+      .add("edges", h.edges)
+      .add("diameter", h.diameter)
+      .add("length", h.length)
+      .add("component", h.component)
+      .add("outer_boundary", h.outer_boundary)
+      .add("simple", h.simple);
   if (!h.simple) j.add("touching_vertex", h.touching_vertex);
   return j;
 }
@@ -81,8 +89,11 @@ void list_holes(const Args& a) {
 
 Json errors_json(const InpaintErrors& e) {
   Json k;
-  k.add("points", static_cast<long long>(e.points)).add("max_e3", e.max * 1e3).add("mean_e3", e.mean * 1e3)
-      .add("rms_e3", e.rms * 1e3).add("new_faces", static_cast<long long>(e.new_faces))
+  k.add("points", static_cast<long long>(e.points))
+      .add("max_e3", e.max * 1e3)
+      .add("mean_e3", e.mean * 1e3)
+      .add("rms_e3", e.rms * 1e3)
+      .add("new_faces", static_cast<long long>(e.new_faces))
       .add("new_face_normal_error_deg", e.mean_normal_error_deg);
   return k;
 }
@@ -140,11 +151,15 @@ void run(const Args& a) {
     Json j;
     j.add("input", a.input).add("output", a.output).add("features", o.recover_features);
     j.add("vertices", static_cast<long long>(mesh.V.rows())).add("faces", static_cast<long long>(mesh.F.rows()));
-    j.add("holes_found", static_cast<int>(r.holes.size())).add("filled", r.filled).add("skipped", r.skipped)
-        .add("failed", r.failed).add("featured", r.featured);
+    j.add("holes_found", static_cast<int>(r.holes.size()))
+        .add("filled", r.filled)
+        .add("skipped", r.skipped)
+        .add("failed", r.failed)
+        .add("featured", r.featured);
     j.add("new_vertices", static_cast<long long>(added))
         .add("new_faces", static_cast<long long>(r.F.rows() - mesh.F.rows()))
-        .add("moved_input_vertices", r.moved_input_vertices).add("crease_flips", r.crease_flips);
+        .add("moved_input_vertices", r.moved_input_vertices)
+        .add("crease_flips", r.crease_flips);
     std::vector<Json> hs;
     for (size_t i = 0; i < r.holes.size(); ++i) {
       Json h = hole_json(static_cast<int>(i), r.holes[i]);
@@ -152,8 +167,11 @@ void run(const Args& a) {
       h.add("action", action_name(rep.action));
       if (!rep.reason.empty()) h.add("reason", rep.reason);
       if (rep.action == HoleAction::Filled)
-        h.add("new_faces", rep.new_faces).add("new_vertices", rep.new_vertices).add("faired", rep.faired)
-            .add("features", rep.features).add("crease_test", rep.features_reason);
+        h.add("new_faces", rep.new_faces)
+            .add("new_vertices", rep.new_vertices)
+            .add("faired", rep.faired)
+            .add("features", rep.features)
+            .add("crease_test", rep.features_reason);
       hs.push_back(h);
     }
     j.add("holes", hs);
@@ -166,16 +184,16 @@ void run(const Args& a) {
 
   if (a.quiet) return;
   if (r.holes.empty()) {
-    std::cout << a.input << " has no holes: " << a.output << " is the input mesh unchanged ("
-              << mesh.V.rows() << " vertices, " << mesh.F.rows() << " faces)\n";
+    std::cout << a.input << " has no holes: " << a.output << " is the input mesh unchanged (" << mesh.V.rows()
+              << " vertices, " << mesh.F.rows() << " faces)\n";
     return;
   }
   {
     for (size_t i = 0; i < r.holes.size(); ++i) {
       const Hole& h = r.holes[i];
       const HoleReport& rep = r.reports[i];
-      std::cout << "  hole " << i << " (" << h.edges << " edges, diameter " << fmt(h.diameter, 3) << "): "
-                << action_name(rep.action);
+      std::cout << "  hole " << i << " (" << h.edges << " edges, diameter " << fmt(h.diameter, 3)
+                << "): " << action_name(rep.action);
       if (rep.action == HoleAction::Filled) {
         std::cout << ", " << rep.new_faces << " faces, " << rep.new_vertices << " vertices";
         if (!rep.faired) std::cout << " (CGAL fairing failed: patch kept unfaired)";

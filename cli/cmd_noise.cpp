@@ -3,12 +3,12 @@
 #include <memory>
 
 #include "command.h"
-#include "output_plan.h"
-#include "number_option.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/io.h"
 #include "msmesh/noise.h"
+#include "number_option.h"
+#include "output_plan.h"
 
 namespace msmesh::cli {
 namespace {
@@ -22,7 +22,7 @@ struct Args {
 void run(const Args& a) {
   NoiseOptions o = a.options;
   o.direction = a.direction == "random" ? NoiseDirection::Random : NoiseDirection::Normal;
-  o.validate();  // before any file is touched
+  o.validate();     // before any file is touched
   OutputPlan plan;  // every file of the run, checked before any work; outputs committed together
   plan.input(a.input).in_place(a.in_place).output(a.output, OutputKind::Mesh, "-o");
   plan.begin();

@@ -37,7 +37,8 @@ void print_table(const ParameterTable<Options>& table, const Options& o) {
       group = i.group;
       std::cout << "  " << group << ":\n";
     }
-    std::cout << "    " << pad("--" + i.name, 27) << pad(i.symbol, 4) << pad(i.format(p.get(o)), 12) << i.help << " (" << i.describe_range() << (i.unit.empty() ? "" : " " + i.unit) << ")\n";
+    std::cout << "    " << pad("--" + i.name, 27) << pad(i.symbol, 4) << pad(i.format(p.get(o)), 12) << i.help << " ("
+              << i.describe_range() << (i.unit.empty() ? "" : " " + i.unit) << ")\n";
   }
 }
 

@@ -3,14 +3,14 @@
 #include <memory>
 
 #include "command.h"
-#include "output_plan.h"
-#include "number_option.h"
+#include "field_files.h"
+#include "figures.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/metrics.h"
 #include "msmesh/render.h"
-#include "field_files.h"
-#include "figures.h"
+#include "number_option.h"
+#include "output_plan.h"
 #include "run_reports.h"
 
 namespace msmesh::cli {
@@ -86,7 +86,8 @@ const Registrar kRegistration("render", 90, [](CLI::App& app) {
       ->capture_default_str();
   add_size_option(c, a->size, "Picture size WxH in pixels (a colour bar adds a strip below)");
   c->add_flag("--perspective", a->perspective, "Perspective camera (default orthographic)");
-  add_feature_edges_option(c, a->feature_angle, "Draw edges sharper than this dihedral angle as thin dark lines (0: off)");
+  add_feature_edges_option(c, a->feature_angle,
+                           "Draw edges sharper than this dihedral angle as thin dark lines (0: off)");
   add_error_max_option(c, a->error_max, "Top of the error colour scale (0: 98th percentile, rounded up)");
   using T = ParameterType;
   add_number_option(c, "--line-width", a->line_width, cli_number("render", "line-width", T::Real, {0, 20}, "pixels"),

@@ -4,12 +4,12 @@
 #include <memory>
 
 #include "command.h"
-#include "output_plan.h"
-#include "number_option.h"
 #include "json.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/repair.h"
+#include "number_option.h"
+#include "output_plan.h"
 
 namespace msmesh::cli {
 namespace {
@@ -53,7 +53,9 @@ void run(const Args& a) {
   if (a.quiet) return;
   if (a.json) {
     Json j;
-    j.add("input", a.input).add("output", a.dry_run ? std::string() : a.output).add("changed", r.changed() || dropped > 0);
+    j.add("input", a.input)
+        .add("output", a.dry_run ? std::string() : a.output)
+        .add("changed", r.changed() || dropped > 0);
     j.add("vertices_before", static_cast<long long>(r.vertices_before))
         .add("faces_before", static_cast<long long>(r.faces_before))
         .add("vertices_after", static_cast<long long>(r.vertices_after))

@@ -7,18 +7,18 @@
 #include <sstream>
 
 #include "command.h"
+#include "field_files.h"
+#include "figures.h"
 #include "json.h"
 #include "msmesh/color_map.h"
 #include "msmesh/denoise.h"
-#include "msmesh/presets.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/parameters.h"
+#include "msmesh/presets.h"
 #include "msmesh/segment.h"
-#include "parameter_options.h"
-#include "field_files.h"
-#include "figures.h"
 #include "output_plan.h"
+#include "parameter_options.h"
 #include "run_reports.h"
 
 namespace msmesh::cli {
@@ -27,7 +27,7 @@ namespace {
 struct Args {
   std::string input, output, labels, parts, preset = "cad";
   bool denoise_first = false, json = false, quiet = false, ascii = false, in_place = false;
-  std::string report;  // --report: HTML report (cli/run_reports.h)
+  std::string report;                                            // --report: HTML report (cli/run_reports.h)
   std::unique_ptr<ParameterOptions<SegmentOptions>> parameters;  // --angle, --alpha ... (parameters.h)
 };
 
@@ -69,8 +69,10 @@ void run(const Args& a) {
   o.validate();
   OutputPlan plan;  // every file of the run, checked before any work; outputs committed together
   plan.input(a.input).in_place(a.in_place);
-  plan.output(a.output, OutputKind::PlyMesh, "-o").output(a.labels, OutputKind::Text, "--labels")
-      .output(a.report, OutputKind::Text, "--report").parts_folder(a.parts, "--parts");
+  plan.output(a.output, OutputKind::PlyMesh, "-o")
+      .output(a.labels, OutputKind::Text, "--labels")
+      .output(a.report, OutputKind::Text, "--report")
+      .parts_folder(a.parts, "--parts");
   plan.begin();
   const auto t0 = std::chrono::steady_clock::now();
   Mesh mesh = read_mesh(a.input);
@@ -114,18 +116,24 @@ void run(const Args& a) {
   if (a.json) {
     Json j;
     j.add("input", a.input).add("output", a.output).add("preset", a.preset).add("denoised", a.denoise_first);
-    j.add("faces", static_cast<long long>(mesh.F.rows())).add("segments", r.count)
-        .add("multicut_segments", r.multicut_count).add("objective", r.objective);
+    j.add("faces", static_cast<long long>(mesh.F.rows()))
+        .add("segments", r.count)
+        .add("multicut_segments", r.multicut_count)
+        .add("objective", r.objective);
     std::vector<Json> segs;
     for (int s = 0; s < r.count; ++s) {
       Json k;
-      k.add("label", s).add("faces", static_cast<long long>(face_count[s])).add("area", r.areas(s))
+      k.add("label", s)
+          .add("faces", static_cast<long long>(face_count[s]))
+          .add("area", r.areas(s))
           .add("area_fraction", total_area > 0 ? r.areas(s) / total_area : 0.0);
       segs.push_back(k);
     }
     j.add("segment_list", segs).add("parameters", parameters_json(segment_parameters(), o));
-    j.add("normal_iterations", r.normal_report.iterations).add("seconds_denoise", seconds_denoise)
-        .add("seconds_segment", seconds_segment).add("seconds_total", seconds);
+    j.add("normal_iterations", r.normal_report.iterations)
+        .add("seconds_denoise", seconds_denoise)
+        .add("seconds_segment", seconds_segment)
+        .add("seconds_total", seconds);
     if (!a.labels.empty()) j.add("labels", a.labels);
     if (!a.parts.empty()) j.add("parts", a.parts);
     std::cout << j.str() << "\n";
@@ -147,10 +155,12 @@ void run(const Args& a) {
 
 const Registrar kRegistration("segment", 70, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
-  CLI::App* c = app.add_subcommand("segment", "Segment a mesh into piecewise-smooth parts (NMSTV edge field + multicut)");
+  CLI::App* c =
+      app.add_subcommand("segment", "Segment a mesh into piecewise-smooth parts (NMSTV edge field + multicut)");
   c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();
   c->add_option("-o,--output", a->output, "Output .ply with one colour per segment on its faces")->required();
-  c->add_option("--labels", a->labels, "Write the segment label of each face (one per line, input order; -: standard output)");
+  c->add_option("--labels", a->labels,
+                "Write the segment label of each face (one per line, input order; -: standard output)");
   c->add_option("--parts", a->parts, "Write each segment as a mesh DIR/part_NNN.obj (re-indexed)");
   c->add_option("--report", a->report, "Write an HTML report: 3D viewer of the segments and edge field, segment table");
   c->add_flag("--denoise", a->denoise_first, "Denoise first (msmesh denoise with the same preset), then segment");

@@ -4,11 +4,11 @@
 #include <string>
 
 #include "command.h"
-#include "output_plan.h"
-#include "number_option.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/shapes.h"
+#include "number_option.h"
+#include "output_plan.h"
 
 namespace msmesh::cli {
 namespace {
@@ -50,7 +50,8 @@ void run(const Args& a) {
 
 const Registrar kRegistration("shape", 20, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
-  CLI::App* c = app.add_subcommand("shape", "Write a built-in procedural test mesh (msmesh shape --list shows the names)");
+  CLI::App* c =
+      app.add_subcommand("shape", "Write a built-in procedural test mesh (msmesh shape --list shows the names)");
   c->add_option("name", a->name, "Shape name; --list shows them");
   c->add_option("-o,--output", a->output, "Output mesh; format from the extension (obj, off, ply, stl)");
   add_number_option(c, "-r,--resolution", a->resolution,

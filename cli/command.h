@@ -12,7 +12,7 @@ namespace msmesh::cli {
 
 struct CommandSpec {
   std::string name;
-  int order;  ///< position in --help
+  int order;                             ///< position in --help
   std::function<void(CLI::App&)> setup;  ///< adds the subcommand and its callback
 };
 
@@ -33,8 +33,9 @@ void finish_progress_line();
 /// -q,--quiet, the same on every subcommand: no progress bar and no summary. Errors, notes of
 /// what was dropped or repaired in the data, and output asked for with --json still appear.
 inline CLI::Option* add_quiet_flag(CLI::App* c, bool& quiet) {
-  return c->add_flag("-q,--quiet", quiet,
-                     "No progress bar and no summary (errors, notes of dropped or repaired data and --json still print)");
+  return c->add_flag(
+      "-q,--quiet", quiet,
+      "No progress bar and no summary (errors, notes of dropped or repaired data and --json still print)");
 }
 
 /// Formats a double compactly for summaries.

@@ -34,8 +34,7 @@ void write_edge_field(const std::string& path, const Eigen::MatrixXd& V, const E
   if (ext == ".ply") {
     os << "ply\nformat ascii 1.0\ncomment msmesh edge discontinuity field v (0 = feature, 1 = smooth)\n"
        << "element vertex " << V.rows() << "\nproperty double x\nproperty double y\nproperty double z\n"
-       << "element edge " << edges.rows()
-       << "\nproperty int vertex1\nproperty int vertex2\nproperty double value\n"
+       << "element edge " << edges.rows() << "\nproperty int vertex1\nproperty int vertex2\nproperty double value\n"
        << "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n";
     for (Eigen::Index i = 0; i < V.rows(); ++i) {
       std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g\n", V(i, 0), V(i, 1), V(i, 2));
@@ -43,8 +42,8 @@ void write_edge_field(const std::string& path, const Eigen::MatrixXd& V, const E
     }
     for (Eigen::Index e = 0; e < edges.rows(); ++e) {
       const Eigen::Vector3d c = field_color(v(e)) * 255.0;
-      std::snprintf(buf, sizeof buf, "%d %d %.9g %d %d %d\n", edges(e, 0), edges(e, 1), v(e),
-                    int(c(0) + 0.5), int(c(1) + 0.5), int(c(2) + 0.5));
+      std::snprintf(buf, sizeof buf, "%d %d %.9g %d %d %d\n", edges(e, 0), edges(e, 1), v(e), int(c(0) + 0.5),
+                    int(c(1) + 0.5), int(c(2) + 0.5));
       os << buf;
     }
   } else {
@@ -56,7 +55,6 @@ void write_edge_field(const std::string& path, const Eigen::MatrixXd& V, const E
   }
   write_text_file(path, os.str());
 }
-
 
 Eigen::VectorXd read_edge_field(const std::string& path, const Topology& topo) {
   std::ifstream in(path);
@@ -81,8 +79,10 @@ Eigen::VectorXd read_edge_field(const std::string& path, const Topology& topo) {
       if (a == "format" && ls >> b && b != "ascii")
         throw IoError("'" + path + "': only ascii PLY edge fields are read (msmesh denoise --save-field writes them)");
       if (a == "element" && ls >> b >> n) {
-        if (b == "vertex") vertices = n;
-        else if (b == "edge") edges_left = n;
+        if (b == "vertex")
+          vertices = n;
+        else if (b == "edge")
+          edges_left = n;
       }
       if (a == "end_header") {
         ended = true;
@@ -109,8 +109,8 @@ Eigen::VectorXd read_edge_field(const std::string& path, const Topology& topo) {
     if (!(ls >> j >> value) || !std::isfinite(value))
       throw IoError("'" + path + "' line " + std::to_string(line_no) + ": expected 'i j v' with a finite v");
     if (edges_left > 0) --edges_left;
-    const auto it = (i < 0 || j < 0 || i > INT32_MAX || j > INT32_MAX) ? index.end()
-                                                                        : index.find(edge_key(int(i), int(j)));
+    const auto it =
+        (i < 0 || j < 0 || i > INT32_MAX || j > INT32_MAX) ? index.end() : index.find(edge_key(int(i), int(j)));
     if (it == index.end())
       throw InvalidInput("'" + path + "' line " + std::to_string(line_no) + ": (" + std::to_string(i) + ", " +
                          std::to_string(j) + ") is not an edge of the mesh (was the field written for another mesh?)");
@@ -122,7 +122,6 @@ Eigen::VectorXd read_edge_field(const std::string& path, const Topology& topo) {
                        std::to_string(topo.num_edges()) + " edges (was it written for another mesh?)");
   return v;
 }
-
 
 Eigen::VectorXi read_face_labels(const std::string& path, Eigen::Index faces) {
   std::ifstream in(path);

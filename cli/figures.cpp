@@ -6,14 +6,14 @@
 #include <sstream>
 
 #include "field_files.h"
-#include "number_option.h"
-#include "usage_error.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/png.h"
 #include "msmesh/segment.h"
 #include "msmesh/text.h"
 #include "msmesh/topology.h"
+#include "number_option.h"
+#include "usage_error.h"
 
 namespace msmesh::cli {
 
@@ -56,9 +56,9 @@ CLI::Option* add_size_option(CLI::App* c, std::string& size, const std::string& 
 }
 
 CLI::Option* add_feature_edges_option(CLI::App* c, double& degrees, const std::string& help) {
-  return add_number_option(c, "--feature-edges", degrees,
-                           cli_number(c->get_name(), "feature-edges", ParameterType::Real, {0, 180, false, true}, "degrees"),
-                           help);
+  return add_number_option(
+      c, "--feature-edges", degrees,
+      cli_number(c->get_name(), "feature-edges", ParameterType::Real, {0, 180, false, true}, "degrees"), help);
 }
 
 CLI::Option* add_supersample_option(CLI::App* c, int& supersample) {

@@ -40,8 +40,7 @@ class Json {
   }
   std::string str() const {
     std::string s = "{";
-    for (size_t i = 0; i < items_.size(); ++i)
-      s += (i ? "," : "") + quote(items_[i].first) + ":" + items_[i].second;
+    for (size_t i = 0; i < items_.size(); ++i) s += (i ? "," : "") + quote(items_[i].first) + ":" + items_[i].second;
     return s + "}";
   }
   static std::string number(double v) {
@@ -54,10 +53,18 @@ class Json {
     std::string o = "\"";
     for (char c : s) {
       switch (c) {
-        case '"': o += "\\\""; break;
-        case '\\': o += "\\\\"; break;
-        case '\n': o += "\\n"; break;
-        case '\t': o += "\\t"; break;
+        case '"':
+          o += "\\\"";
+          break;
+        case '\\':
+          o += "\\\\";
+          break;
+        case '\n':
+          o += "\\n";
+          break;
+        case '\t':
+          o += "\\t";
+          break;
         default:
           if (static_cast<unsigned char>(c) < 0x20) {
             char buf[8];

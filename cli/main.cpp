@@ -13,9 +13,9 @@
 
 #include "command.h"
 #include "msmesh/atomic_file.h"
-#include "number_option.h"
 #include "msmesh/errors.h"
 #include "msmesh/threads.h"
+#include "number_option.h"
 #include "usage_error.h"
 
 namespace {
@@ -38,8 +38,7 @@ void restart_with_runtime_settings(char** argv) {
   bool changed = false;
   if (std::getenv("OMP_WAIT_POLICY") == nullptr && std::getenv("GOMP_SPINCOUNT") == nullptr)
     changed |= setenv("OMP_WAIT_POLICY", "passive", 1) == 0;
-  if (std::getenv("GLIBC_TUNABLES") == nullptr)
-    changed |= setenv("GLIBC_TUNABLES", kMallocTunables, 1) == 0;
+  if (std::getenv("GLIBC_TUNABLES") == nullptr) changed |= setenv("GLIBC_TUNABLES", kMallocTunables, 1) == 0;
   if (!changed) return;
   setenv("MSMESH_NO_RESTART", "1", 1);
   execv("/proc/self/exe", argv);  // returns only on failure: then carry on as we are
@@ -53,7 +52,8 @@ std::size_t distance(const std::string& a, const std::string& b) {
   for (std::size_t i = 1; i <= a.size(); ++i)
     for (std::size_t j = 1; j <= b.size(); ++j) {
       d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
   return d[a.size()][b.size()];
 }
@@ -168,8 +168,7 @@ int run(int argc, char** argv) {
   // soon as it is parsed, so before any subcommand runs.
   app.fallthrough();
   msmesh::cli::add_number_option(
-      &app, "--threads",
-      msmesh::cli::cli_number("command line", "threads", msmesh::ParameterType::Integer, {1, 4096}),
+      &app, "--threads", msmesh::cli::cli_number("command line", "threads", msmesh::ParameterType::Integer, {1, 4096}),
       [](double n) { msmesh::set_threads(static_cast<int>(n)); },
       "Threads for the parallel work (default: every core, or OMP_NUM_THREADS); results are the same for any number",
       "");
@@ -183,8 +182,7 @@ int run(int argc, char** argv) {
     std::string message = e.what();
     const std::string hint = suggestion(app, argc, argv);
     if (!hint.empty()) message += " (" + hint + ")";
-    return report_error(message + "\nRun 'msmesh --help' or 'msmesh SUBCOMMAND --help' for the options.",
-                        kUsageStatus);
+    return report_error(message + "\nRun 'msmesh --help' or 'msmesh SUBCOMMAND --help' for the options.", kUsageStatus);
   } catch (const msmesh::cli::UsageError& e) {
     return report_error(e.what(), kUsageStatus);
   } catch (const msmesh::Error& e) {

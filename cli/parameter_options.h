@@ -19,8 +19,7 @@ namespace msmesh::cli {
 
 /// "α > 0, fidelity to the input normals (eq. 15) [default: cad 2.5, smooth 2]".
 template <class Options>
-std::string parameter_help(const Parameter<Options>& p,
-                           const std::vector<std::pair<std::string, Options>>& defaults) {
+std::string parameter_help(const Parameter<Options>& p, const std::vector<std::pair<std::string, Options>>& defaults) {
   const ParameterInfo& i = p.info;
   std::string h = i.symbol.empty() ? "" : i.symbol + ": ";
   h += i.help;

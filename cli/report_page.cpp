@@ -32,12 +32,23 @@ std::string html_escape(const std::string& s) {
   o.reserve(s.size());
   for (char c : s) {
     switch (c) {
-      case '&': o += "&amp;"; break;
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '"': o += "&quot;"; break;
-      case '\'': o += "&#39;"; break;
-      default: o += c;
+      case '&':
+        o += "&amp;";
+        break;
+      case '<':
+        o += "&lt;";
+        break;
+      case '>':
+        o += "&gt;";
+        break;
+      case '"':
+        o += "&quot;";
+        break;
+      case '\'':
+        o += "&#39;";
+        break;
+      default:
+        o += c;
     }
   }
   return o;
@@ -97,13 +108,15 @@ std::string viewer_data_json(const ReportData& d) {
       const auto& e = d.meshes[i].face_error_deg;
       all.insert(all.end(), e.data(), e.data() + e.size());
     }
-    if (!all.empty()) error_max = error_scale(Eigen::Map<Eigen::VectorXd>(all.data(), static_cast<Eigen::Index>(all.size())));
+    if (!all.empty())
+      error_max = error_scale(Eigen::Map<Eigen::VectorXd>(all.data(), static_cast<Eigen::Index>(all.size())));
   }
   std::vector<Json> meshes;
   for (const auto& m : d.meshes) {
     validate_mesh(m.V, m.F, "report mesh '" + m.name + "'");
     Json j;
-    j.add("name", m.name).add("vertices", static_cast<long long>(m.V.rows()))
+    j.add("name", m.name)
+        .add("vertices", static_cast<long long>(m.V.rows()))
         .add("faces", static_cast<long long>(m.F.rows()));
     const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> Vr = m.V;
     const Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor> Fr = m.F;
@@ -113,10 +126,13 @@ std::string viewer_data_json(const ReportData& d) {
     int same = -1;
     for (size_t k = 0; k < meshes.size() && same < 0; ++k)
       if (d.meshes[k].F.rows() == m.F.rows() && d.meshes[k].F == m.F) same = static_cast<int>(k);
-    if (same >= 0) j.add("indices_of", same);
-    else j.add("indices", ints_b64(Fr.data(), static_cast<size_t>(Fr.size())));
+    if (same >= 0)
+      j.add("indices_of", same);
+    else
+      j.add("indices", ints_b64(Fr.data(), static_cast<size_t>(Fr.size())));
     if (m.face_error_deg.size()) {
-      if (m.face_error_deg.size() != m.F.rows()) throw InvalidInput("report mesh '" + m.name + "': face_error_deg size");
+      if (m.face_error_deg.size() != m.F.rows())
+        throw InvalidInput("report mesh '" + m.name + "': face_error_deg size");
       j.add("error", floats_b64(m.face_error_deg.data(), static_cast<size_t>(m.face_error_deg.size())));
       j.add("error_max_of_mesh", m.face_error_deg.maxCoeff());
     }
@@ -150,8 +166,11 @@ std::string viewer_data_json(const ReportData& d) {
     label_rgb.insert(label_rgb.end(), {c(0), c(1), c(2)});
   }
   Json j;
-  j.add("meshes", meshes).add("initial_mesh", d.initial_mesh).add("initial_color", d.initial_color)
-      .add("error_max", error_max).add("label_colors", label_rgb);
+  j.add("meshes", meshes)
+      .add("initial_mesh", d.initial_mesh)
+      .add("initial_color", d.initial_color)
+      .add("error_max", error_max)
+      .add("label_colors", label_rgb);
   std::string s = j.str();
   // Inside <script>, "</" could close the element: JSON allows "<\/" for it.
   for (size_t p = 0; (p = s.find("</", p)) != std::string::npos; p += 3) s.replace(p, 2, "<\\/");
@@ -187,8 +206,8 @@ std::string plot_svg(const ReportPlot& p) {
       }
   }
   std::ostringstream o;
-  o << "<svg class=\"plot\" xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " << W << " " << H << "\" width=\""
-    << W << "\" height=\"" << H << "\" role=\"img\" aria-label=\"" << html_escape(p.title) << "\">";
+  o << "<svg class=\"plot\" xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " << W << " " << H << "\" width=\"" << W
+    << "\" height=\"" << H << "\" role=\"img\" aria-label=\"" << html_escape(p.title) << "\">";
   o << "<text x=\"" << ml << "\" y=\"18\" class=\"pt\">" << html_escape(p.title) << "</text>";
   if (n_max == 0 || !std::isfinite(lo)) {
     o << "<text x=\"" << ml + 10 << "\" y=\"" << mt + ph / 2 << "\">no data</text></svg>";
@@ -347,7 +366,8 @@ std::string report_html(const ReportData& d) {
   o << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
     << "<meta name=\"viewport\" content=\"width=device-width,initial-scale=1\">"
     << "<meta name=\"generator\" content=\"msmesh 0.1.0\">"
-    << "<title>" << html_escape(d.title) << "</title><style>" << kStyle << "</style>"
+    << "<title>" << html_escape(d.title) << "</title><style>" << kStyle
+    << "</style>"
     // Errors are collected from the start, for people (shown in the viewer) and for tests.
     << "<script>window.msmeshErrors=[];window.addEventListener('error',function(e){"
        "window.msmeshErrors.push(String(e.message||e))});</script>"

@@ -11,12 +11,12 @@ namespace msmesh::cli {
 
 /// One mesh of the report's 3D viewer.
 struct ReportMesh {
-  std::string name;    ///< button label, e.g. "input", "result", "truth"
-  Eigen::MatrixXd V;   ///< #V by 3
-  Eigen::MatrixXi F;   ///< #F by 3
-  Eigen::VectorXd face_error_deg;  ///< empty or #F: angle to the truth's face normal
-  Eigen::VectorXd edge_field;      ///< empty or #E: v[e] on Topology::edges.row(e) of F
-  Eigen::VectorXi face_labels;     ///< empty or #F: segment labels
+  std::string name;                     ///< button label, e.g. "input", "result", "truth"
+  Eigen::MatrixXd V;                    ///< #V by 3
+  Eigen::MatrixXi F;                    ///< #F by 3
+  Eigen::VectorXd face_error_deg;       ///< empty or #F: angle to the truth's face normal
+  Eigen::VectorXd edge_field;           ///< empty or #E: v[e] on Topology::edges.row(e) of F
+  Eigen::VectorXi face_labels;          ///< empty or #F: segment labels
   std::vector<bool> highlighted_faces;  ///< empty or #F: drawn tinted (e.g. faces added by inpainting)
 };
 
@@ -34,16 +34,16 @@ struct ReportTable {
 };
 
 struct ReportData {
-  std::string title;     ///< e.g. "msmesh denoise: noisy.obj"
-  std::string subtitle;  ///< e.g. the command line or a one-line summary
-  std::vector<ReportMesh> meshes;  ///< the viewer's meshes, the first shown first
-  int initial_mesh = 0;            ///< index into meshes shown when the page opens
-  std::string initial_color = "shaded";  ///< "shaded", "error", "field" or "labels"
+  std::string title;                                            ///< e.g. "msmesh denoise: noisy.obj"
+  std::string subtitle;                                         ///< e.g. the command line or a one-line summary
+  std::vector<ReportMesh> meshes;                               ///< the viewer's meshes, the first shown first
+  int initial_mesh = 0;                                         ///< index into meshes shown when the page opens
+  std::string initial_color = "shaded";                         ///< "shaded", "error", "field" or "labels"
   std::vector<std::pair<std::string, std::string>> parameters;  ///< name, value
   /// Tables under the viewer, each with a heading (error figures, run statistics, ...).
   std::vector<std::pair<std::string, ReportTable>> tables;
-  std::vector<ReportPlot> plots;    ///< convergence plots (empty: section left out)
-  std::vector<std::string> notes;   ///< paragraphs under the figures
+  std::vector<ReportPlot> plots;   ///< convergence plots (empty: section left out)
+  std::vector<std::string> notes;  ///< paragraphs under the figures
 };
 
 /// The whole HTML page of `data` (self-contained: viewer script, data and styles inline; no

@@ -95,7 +95,12 @@ void write_denoise_report(const std::string& path, const std::string& input_path
 
   if (truth) {
     ReportTable t;
-    t.header = {"mesh", "MSAE (x1e-3)", "mean angle (deg)", "flipped faces", "dist. mean (x1e-3)", "dist. RMS (x1e-3)",
+    t.header = {"mesh",
+                "MSAE (x1e-3)",
+                "mean angle (deg)",
+                "flipped faces",
+                "dist. mean (x1e-3)",
+                "dist. RMS (x1e-3)",
                 "dist. max (x1e-3)"};
     auto row = [&](const std::string& name, const Evaluation& e) {
       const bool s = e.same_connectivity;
@@ -106,9 +111,10 @@ void write_denoise_report(const std::string& path, const std::string& input_path
     row("input", ev_in);
     row("result", ev_out);
     d.tables.push_back({"Error against the ground truth", t});
-    d.notes.push_back("MSAE: mean over faces of the squared angle (radians) between result and truth face normals, "
-                      "printed x1e-3 as in the paper; mean angle: the plain mean angle in degrees. Distances: "
-                      "vertex to truth surface over the truth's bounding-box diagonal.");
+    d.notes.push_back(
+        "MSAE: mean over faces of the squared angle (radians) between result and truth face normals, "
+        "printed x1e-3 as in the paper; mean angle: the plain mean angle in degrees. Distances: "
+        "vertex to truth surface over the truth's bounding-box diagonal.");
   }
   ReportTable run;
   run.header = {"stage", "iterations", "converged", "seconds", "final value"};
@@ -118,8 +124,8 @@ void write_denoise_report(const std::string& path, const std::string& input_path
                         num(r.seconds_normals, 3),
                         n.residual_history.empty() ? "-" : "residual " + num(n.residual_history.back())});
   } else {
-    run.rows.push_back({"bilateral normals", std::to_string(o.bilateral.normal_iterations), "-",
-                        num(r.seconds_normals, 3), "-"});
+    run.rows.push_back(
+        {"bilateral normals", std::to_string(o.bilateral.normal_iterations), "-", num(r.seconds_normals, 3), "-"});
   }
   const auto& v = r.vertex_report;
   run.rows.push_back({"vertex update", std::to_string(v.iterations), v.converged ? "yes" : "no",
@@ -171,7 +177,9 @@ void write_inpaint_report(const std::string& path, const std::string& input_path
   t.header = {"hole", "edges", "diameter", "action", "new faces", "features"};
   for (size_t i = 0; i < r.holes.size(); ++i) {
     const HoleReport& rep = r.reports[i];
-    const char* action = rep.action == HoleAction::Filled ? "filled" : rep.action == HoleAction::Failed ? "failed" : "skipped";
+    const char* action = rep.action == HoleAction::Filled   ? "filled"
+                         : rep.action == HoleAction::Failed ? "failed"
+                                                            : "skipped";
     t.rows.push_back({std::to_string(i), std::to_string(r.holes[i].edges), num(r.holes[i].diameter, 3),
                       std::string(action) + (rep.reason.empty() ? "" : " (" + rep.reason + ")"),
                       std::to_string(rep.new_faces),
@@ -186,7 +194,9 @@ void write_inpaint_report(const std::string& path, const std::string& input_path
                       num(e.mean_normal_error_deg)});
     d.tables.push_back({"Filled region against the ground truth", f});
   }
-  d.notes.push_back("New faces are tinted in the viewer's shaded mode. Plots: the last feature-recovery round, on the region around the recovered holes.");
+  d.notes.push_back(
+      "New faces are tinted in the viewer's shaded mode. Plots: the last feature-recovery round, on the region around "
+      "the recovered holes.");
   add_plots(d, r.normal_report, &r.vertex_report);
   write_report(path, d);
 }

@@ -83,18 +83,24 @@ class BitWriter {
 };
 
 void put_literal_length(BitWriter& w, int symbol) {
-  if (symbol < 144) w.put_code(0x30 + symbol, 8);
-  else if (symbol < 256) w.put_code(0x190 + (symbol - 144), 9);
-  else if (symbol < 280) w.put_code(symbol - 256, 7);
-  else w.put_code(0xC0 + (symbol - 280), 8);
+  if (symbol < 144)
+    w.put_code(0x30 + symbol, 8);
+  else if (symbol < 256)
+    w.put_code(0x190 + (symbol - 144), 9);
+  else if (symbol < 280)
+    w.put_code(symbol - 256, 7);
+  else
+    w.put_code(0xC0 + (symbol - 280), 8);
 }
 
 constexpr int kLengthBase[29] = {3,  4,  5,  6,  7,  8,  9,  10, 11,  13,  15,  17,  19,  23, 27,
                                  31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
-constexpr int kLengthExtra[29] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
+constexpr int kLengthExtra[29] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2,
+                                  2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
 constexpr int kDistBase[30] = {1,   2,   3,   4,   5,   7,    9,    13,   17,   25,   33,   49,   65,    97,    129,
                                193, 257, 385, 513, 769, 1025, 1537, 2049, 3073, 4097, 6145, 8193, 12289, 16385, 24577};
-constexpr int kDistExtra[30] = {0, 0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13};
+constexpr int kDistExtra[30] = {0, 0, 0, 0, 1, 1, 2, 2,  3,  3,  4,  4,  5,  5,  6,
+                                6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13};
 
 void put_match(BitWriter& w, int length, int distance) {
   int li = 28;
@@ -192,11 +198,20 @@ std::vector<std::uint8_t> filter_rows(const Image& image) {
         const int a = i >= 3 ? row[i - 3] : 0, b = up[i], c = i >= 3 ? up[i - 3] : 0;
         int pred = 0;
         switch (type) {
-          case 1: pred = a; break;
-          case 2: pred = b; break;
-          case 3: pred = (a + b) / 2; break;
-          case 4: pred = paeth(a, b, c); break;
-          default: break;
+          case 1:
+            pred = a;
+            break;
+          case 2:
+            pred = b;
+            break;
+          case 3:
+            pred = (a + b) / 2;
+            break;
+          case 4:
+            pred = paeth(a, b, c);
+            break;
+          default:
+            break;
         }
         const std::uint8_t v = static_cast<std::uint8_t>(row[i] - pred);
         candidate[i] = v;

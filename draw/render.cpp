@@ -2,6 +2,7 @@
 // lines, supersampling. Single-threaded on purpose: identical pixels on every run.
 #include "msmesh/render.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,7 +10,6 @@
 #include <unordered_set>
 #include <utility>
 #include <vector>
-#include <Eigen/Geometry>
 
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
@@ -46,8 +46,7 @@ const ParameterTable<RenderOptions>& render_parameters() {
                      &O::supersample),
       bind_parameter(ParameterInfo{"fov", "", "degrees", T::Real, {0, 120, true, true}, "perspective field of view", g},
                      &O::fov_deg),
-      bind_parameter(ParameterInfo{"margin", "", "", T::Real, {0, 0.45}, "empty fraction on each side", g},
-                     &O::margin),
+      bind_parameter(ParameterInfo{"margin", "", "", T::Real, {0, 0.45}, "empty fraction on each side", g}, &O::margin),
       bind_parameter(ParameterInfo{"ambient", "", "", T::Real, {0}, "ambient shade", g}, &O::ambient),
       bind_parameter(ParameterInfo{"diffuse", "", "", T::Real, {0}, "diffuse shade", g}, &O::diffuse),
       bind_parameter(ParameterInfo{"line-width", "", "pixels", T::Real, {0, 20, true, false}, "width of edge lines", g},
@@ -58,7 +57,8 @@ const ParameterTable<RenderOptions>& render_parameters() {
 
 void RenderOptions::validate() const {
   check_parameters(render_parameters(), *this);
-  if (!light.allFinite() || light.norm() == 0) throw InvalidInput("render option light must be a non-zero finite vector");
+  if (!light.allFinite() || light.norm() == 0)
+    throw InvalidInput("render option light must be a non-zero finite vector");
   if (frame_points.size() != 0 && (frame_points.cols() != 3 || !frame_points.allFinite()))
     throw InvalidInput("render option frame_points must be #P by 3 and finite");
   if (!background.allFinite() || !base_color.allFinite())
@@ -78,12 +78,30 @@ struct CameraFrame {
 CameraFrame camera_frame(View view) {
   CameraFrame c;
   switch (view) {
-    case View::Front: c.back = {0, 0, 1}; c.up = {0, 1, 0}; break;
-    case View::Back: c.back = {0, 0, -1}; c.up = {0, 1, 0}; break;
-    case View::Right: c.back = {1, 0, 0}; c.up = {0, 1, 0}; break;
-    case View::Left: c.back = {-1, 0, 0}; c.up = {0, 1, 0}; break;
-    case View::Top: c.back = {0, 1, 0}; c.up = {0, 0, -1}; break;
-    case View::Bottom: c.back = {0, -1, 0}; c.up = {0, 0, 1}; break;
+    case View::Front:
+      c.back = {0, 0, 1};
+      c.up = {0, 1, 0};
+      break;
+    case View::Back:
+      c.back = {0, 0, -1};
+      c.up = {0, 1, 0};
+      break;
+    case View::Right:
+      c.back = {1, 0, 0};
+      c.up = {0, 1, 0};
+      break;
+    case View::Left:
+      c.back = {-1, 0, 0};
+      c.up = {0, 1, 0};
+      break;
+    case View::Top:
+      c.back = {0, 1, 0};
+      c.up = {0, 0, -1};
+      break;
+    case View::Bottom:
+      c.back = {0, -1, 0};
+      c.up = {0, 0, 1};
+      break;
     case View::Iso:
       c.back = Eigen::Vector3d(1, 1, 1).normalized();
       c.up = (Eigen::Vector3d(0, 1, 0) - c.back * c.back.y()).normalized();
@@ -100,8 +118,8 @@ struct Projector {
   CameraFrame frame;
   bool perspective = false;
   Eigen::Vector3d center = Eigen::Vector3d::Zero();
-  double distance = 1;                 // perspective: eye = center + back·distance
-  double scale = 1, cx = 0, cy = 0;    // screen = (W/2 + scale (x − cx), H/2 − scale (y − cy))
+  double distance = 1;               // perspective: eye = center + back·distance
+  double scale = 1, cx = 0, cy = 0;  // screen = (W/2 + scale (x − cx), H/2 − scale (y − cy))
   double half_w = 0, half_h = 0;
 
   // Camera-plane coordinates before scaling, and the depth key.
@@ -192,7 +210,8 @@ Projector frame_camera(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const
 /// continuous also where the faces along it meet it only at a vertex (there the face with the
 /// edge does not cover the whole half-width around the line). Empty without lines; throws
 /// InvalidInput for a line that is not an edge of F.
-std::vector<std::vector<int>> lines_by_vertex(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const MeshStyle& style) {
+std::vector<std::vector<int>> lines_by_vertex(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                                              const MeshStyle& style) {
   std::vector<std::vector<int>> vertex_lines;
   const Eigen::Index nf = F.rows(), nl = style.lines.rows();
   if (nl == 0) return vertex_lines;
@@ -213,14 +232,15 @@ std::vector<std::vector<int>> lines_by_vertex(const Eigen::MatrixXd& V, const Ei
 }
 
 /// The lines face f may show: those at its corners (unique) whose ends are on screen.
-std::vector<int> lines_at_face(const Eigen::MatrixXi& F, Eigen::Index f, const std::vector<std::vector<int>>& vertex_lines,
-                               const std::vector<Eigen::Vector3d>& S, const MeshStyle& style) {
+std::vector<int> lines_at_face(const Eigen::MatrixXi& F, Eigen::Index f,
+                               const std::vector<std::vector<int>>& vertex_lines, const std::vector<Eigen::Vector3d>& S,
+                               const MeshStyle& style) {
   std::vector<int> lines_here;
   if (vertex_lines.empty()) return lines_here;
   for (int k = 0; k < 3; ++k)
     for (int l : vertex_lines[F(f, k)])
-      if (std::find(lines_here.begin(), lines_here.end(), l) == lines_here.end() &&
-          S[style.lines(l, 0)].allFinite() && S[style.lines(l, 1)].allFinite())
+      if (std::find(lines_here.begin(), lines_here.end(), l) == lines_here.end() && S[style.lines(l, 0)].allFinite() &&
+          S[style.lines(l, 1)].allFinite())
         lines_here.push_back(l);
   return lines_here;
 }
@@ -248,8 +268,8 @@ Eigen::Vector3f shaded_face_color(const Eigen::MatrixXd& V, const Eigen::MatrixX
     const Eigen::Vector3d nc(proj.frame.right.dot(n), proj.frame.up.dot(n), proj.frame.back.dot(n));
     shade = o.ambient + o.diffuse * std::max(0.0, nc.dot(light));
   }
-  const Eigen::Vector3d base = style.face_colors.rows() ? Eigen::Vector3d(style.face_colors.row(f).transpose())
-                                                        : o.base_color;
+  const Eigen::Vector3d base =
+      style.face_colors.rows() ? Eigen::Vector3d(style.face_colors.row(f).transpose()) : o.base_color;
   return (base * shade).cwiseMin(1.0).cwiseMax(0.0).cast<float>();
 }
 
@@ -259,7 +279,9 @@ struct SampleBuffer {
   std::vector<Eigen::Vector3f> color;
   std::vector<double> depth;
   SampleBuffer(int w, int h, const Eigen::Vector3d& background)
-      : W(w), H(h), color(static_cast<size_t>(w) * h, background.cast<float>()),
+      : W(w),
+        H(h),
+        color(static_cast<size_t>(w) * h, background.cast<float>()),
         depth(static_cast<size_t>(w) * h, -std::numeric_limits<double>::infinity()) {}
 };
 
@@ -339,8 +361,7 @@ Image downsample(const SampleBuffer& buf, const RenderOptions& o) {
 // Rasteriser
 // ---------------------------------------------------------------------------------------
 
-Image render_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const MeshStyle& style,
-                  const RenderOptions& o) {
+Image render_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const MeshStyle& style, const RenderOptions& o) {
   o.validate();
   validate_mesh(V, F, "render");
   const Eigen::Index nf = F.rows();

@@ -8,6 +8,8 @@
 // The temporary files alive at any moment are listed in a registry a signal handler can read
 // (a linked list of fixed-size slots that are never freed, published with atomic stores), so
 // SIGINT, SIGTERM, ... remove them before the process dies (install_output_signal_handlers).
+#include "msmesh/atomic_file.h"
+
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
@@ -27,7 +29,6 @@
 #include <utility>
 #include <vector>
 
-#include "msmesh/atomic_file.h"
 #include "msmesh/errors.h"
 
 namespace msmesh {
@@ -225,8 +226,8 @@ class Staged {
     const fs::path dir = target_.has_parent_path() ? target_.parent_path() : fs::path(".");
     std::random_device rd;
     for (int attempt = 0; attempt < 16; ++attempt) {
-      const std::string suffix = ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + "-" +
-                                 std::to_string(rd() % 1000000);
+      const std::string suffix =
+          ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + "-" + std::to_string(rd() % 1000000);
       std::string name = "." + target_.filename().string() + suffix;
       if (name.size() > kNameMax) name = ".msmesh" + suffix;  // a long target name: keep within NAME_MAX
       const fs::path tmp = dir / name;
@@ -408,7 +409,7 @@ void write_text_file(const std::string& path, const std::string& text) {
 void create_output_folder(const std::string& dir) {
   fs::path target = fs::path(dir).lexically_normal();
   if (!target.has_filename() && target.has_parent_path()) target = target.parent_path();  // "parts/"
-  std::vector<fs::path> missing;  // innermost first
+  std::vector<fs::path> missing;                                                          // innermost first
   for (fs::path p = target; !p.empty(); p = p.parent_path()) {
     struct stat st;
     if (::stat(p.c_str(), &st) == 0) break;

@@ -94,7 +94,7 @@ struct Soup {
   std::vector<Polygon> polygons;
   std::vector<CGAL::IO::Color> vertex_colors;
   // Per-vertex attributes (empty when absent or not per-vertex).
-  std::vector<std::array<double, 3>> rgb;      ///< OBJ "v x y z r g b" colours in [0,1]
+  std::vector<std::array<double, 3>> rgb;  ///< OBJ "v x y z r g b" colours in [0,1]
   std::vector<std::array<double, 2>> uv;
   std::vector<std::array<double, 3>> normals;
   ReadNotes notes;

@@ -2,13 +2,15 @@
 // checks), the reader of its format (read_obj.cpp, read_off.cpp, read_ply.cpp, read_stl.cpp),
 // the errors of CGAL and the allocator turned into IoError naming the file, and the polygon
 // soup turned into a Mesh (polygons triangulated, degenerate triangles dropped, attributes, notes).
+#include "msmesh/read_mesh.h"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdint>
 #include <climits>
+#include <cstdint>
 #include <cstring>
 #include <new>
 #include <stdexcept>
@@ -18,9 +20,8 @@
 
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
-#include "msmesh/mesh_format.h"
 #include "msmesh/memory.h"
-#include "msmesh/read_mesh.h"
+#include "msmesh/mesh_format.h"
 #include "read_common.h"
 
 namespace msmesh {
@@ -33,13 +34,20 @@ namespace {
 /// symlink loop or a permission problem does not read as a missing file.
 std::string open_error(const std::string& path, int err) {
   switch (err) {
-    case ENOENT: return path + ": no such file";
-    case ELOOP: return path + ": too many levels of symbolic links (a symlink loop)";
-    case EACCES: return path + ": permission denied (the file is not readable or a folder on its path not searchable)";
-    case ENAMETOOLONG: return path + ": file name too long (a name over 255 bytes or a path over 4095)";
-    case ENOTDIR: return path + ": a component of the path is not a folder";
-    case EISDIR: return path + ": is a directory, not a mesh file";
-    default: return path + ": cannot open file for reading: " + std::strerror(err);
+    case ENOENT:
+      return path + ": no such file";
+    case ELOOP:
+      return path + ": too many levels of symbolic links (a symlink loop)";
+    case EACCES:
+      return path + ": permission denied (the file is not readable or a folder on its path not searchable)";
+    case ENAMETOOLONG:
+      return path + ": file name too long (a name over 255 bytes or a path over 4095)";
+    case ENOTDIR:
+      return path + ": a component of the path is not a folder";
+    case EISDIR:
+      return path + ": is a directory, not a mesh file";
+    default:
+      return path + ": cannot open file for reading: " + std::strerror(err);
   }
 }
 
@@ -128,7 +136,8 @@ Mesh soup_to_mesh(const std::string& path, const Soup& soup, Eigen::Index* dropp
     mesh.vertex_colors.resize(static_cast<Eigen::Index>(nv), 3);
     for (std::size_t i = 0; i < nv; ++i) {
       const auto& col = soup.vertex_colors[i];
-      mesh.vertex_colors.row(static_cast<Eigen::Index>(i)) << col.red() / 255.0, col.green() / 255.0, col.blue() / 255.0;
+      mesh.vertex_colors.row(static_cast<Eigen::Index>(i)) << col.red() / 255.0, col.green() / 255.0,
+          col.blue() / 255.0;
     }
   }
   auto fill = [&](Eigen::MatrixXd& M, const auto& rows) {

@@ -112,7 +112,8 @@ void read_obj(const std::string& path, std::string_view data, Soup& soup) {
       }
     } else if (w[0] == "vt") {
       if (w.size() < 2) fail(n, "texture coordinate record without a value");
-      vt.push_back({number(n, w[1], "texture coordinate"), w.size() >= 3 ? number(n, w[2], "texture coordinate") : 0.0});
+      vt.push_back(
+          {number(n, w[1], "texture coordinate"), w.size() >= 3 ? number(n, w[2], "texture coordinate") : 0.0});
     } else if (w[0] == "vn") {
       if (w.size() < 4) fail(n, "normal record with fewer than 3 components");
       vn.push_back({number(n, w[1], "normal component"), number(n, w[2], "normal component"),

@@ -79,7 +79,8 @@ OffHeader parse_off_header(const std::string& path, std::string_view data) {
   if (!flags.empty() && flags.front() == 'N') h.normals = true, flags.remove_prefix(1);
   if (!flags.empty() && flags.front() == '4') h.homogeneous = true, flags.remove_prefix(1);
   if (!flags.empty())
-    throw IoError(path + ": unsupported OFF variant " + quote_word(key) + " (n-dimensional and other variants are not read)");
+    throw IoError(path + ": unsupported OFF variant " + quote_word(key) +
+                  " (n-dimensional and other variants are not read)");
   skip_space_and_comments();
   if (data.substr(i, 6) == "BINARY") {
     h.binary = true;
@@ -98,7 +99,8 @@ OffHeader parse_off_header(const std::string& path, std::string_view data) {
   } else {
     const auto nv = stream_integer(), nf = stream_integer(), ne = stream_integer();
     if (!nv || !nf || !ne)
-      throw IoError(path + ": malformed OFF header: expected the vertex, face and edge counts after " + quote_word(key));
+      throw IoError(path + ": malformed OFF header: expected the vertex, face and edge counts after " +
+                    quote_word(key));
     h.vertices = *nv;
     h.faces = *nf;
     h.edges = *ne;
@@ -128,7 +130,9 @@ std::vector<double> cgal_off_entries(std::string_view line) {
   std::vector<double> entries;
   // Fast path for the usual records of plain digits (no sign, point or exponent), where
   // strtod and `istream >> double` agree.
-  if (std::all_of(line.begin(), line.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)) || std::isspace(static_cast<unsigned char>(c)); })) {
+  if (std::all_of(line.begin(), line.end(), [](char c) {
+        return std::isdigit(static_cast<unsigned char>(c)) || std::isspace(static_cast<unsigned char>(c));
+      })) {
     for (const std::string_view w : split_words(line)) entries.push_back(std::strtod(std::string(w).c_str(), nullptr));
     return entries;
   }
@@ -160,7 +164,8 @@ bool valid_color_entries(const std::vector<double>& e, std::size_t first, std::s
 /// CGAL reads without bounds checks (a short line, or a line without colour after one with,
 /// makes it read past the end of its entry array). Without `parse_vertices` the vertex
 /// records are only counted, not checked.
-std::string check_ascii_off(std::string_view data, const OffHeader& h, bool strict_entries, bool parse_vertices = true) {
+std::string check_ascii_off(std::string_view data, const OffHeader& h, bool strict_entries,
+                            bool parse_vertices = true) {
   std::size_t i = h.body_offset;
   std::size_t record_start = i;
   auto next_record = [&](std::string_view& line) {
@@ -193,7 +198,8 @@ std::string check_ascii_off(std::string_view data, const OffHeader& h, bool stri
   std::string_view line;
   for (long long v = 0; v < h.vertices; ++v) {
     if (!next_record(line))
-      return "truncated OFF file: it ends after " + std::to_string(v) + " of " + std::to_string(h.vertices) + " vertices";
+      return "truncated OFF file: it ends after " + std::to_string(v) + " of " + std::to_string(h.vertices) +
+             " vertices";
     if (!parse_vertices) continue;
     const std::vector<double> e = cgal_off_entries(line);
     if (e.size() < 3) {
@@ -253,12 +259,13 @@ void read_off(const std::string& path, std::string_view data, Soup& soup) {
   }
   MemoryStream in(data);
   std::vector<CGAL::IO::Color> colors;
-  const bool ok = CGAL::IO::read_OFF(
-      in, soup.points, soup.polygons,
-      CGAL::parameters::vertex_color_output_iterator(std::back_inserter(colors)).verbose(false));
+  const bool ok =
+      CGAL::IO::read_OFF(in, soup.points, soup.polygons,
+                         CGAL::parameters::vertex_color_output_iterator(std::back_inserter(colors)).verbose(false));
   if (!ok) {
     std::string problem = h.binary ? "" : check_ascii_off(data, h, false);
-    if (problem.empty()) problem = h.binary ? "malformed or truncated binary OFF file" : "malformed OFF file (CGAL's reader failed)";
+    if (problem.empty())
+      problem = h.binary ? "malformed or truncated binary OFF file" : "malformed OFF file (CGAL's reader failed)";
     throw IoError(path + ": " + problem);
   }
   soup.vertex_colors = std::move(colors);

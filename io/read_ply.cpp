@@ -164,8 +164,7 @@ PlyHeader parse_ply_header(const std::string& path, std::string_view data) {
     } else if (e.name == "face" || e.name == "faces") {
       const PlyProperty* p = e.find("vertex_indices");
       if (!p) p = e.find("vertex_index");
-      if (!p || !p->is_list || ply_is_float(p->type))
-        fail("PLY face element has no 'vertex_indices' list of integers");
+      if (!p || !p->is_list || ply_is_float(p->type)) fail("PLY face element has no 'vertex_indices' list of integers");
     }
   }
   // The declared counts must fit in the bytes present (the body reader reserves from them, and
@@ -199,7 +198,8 @@ class PlyBodyReader {
  public:
   PlyBodyReader(const std::string& path, std::string_view data, const PlyHeader& h)
       : path_(path), data_(data), pos_(h.body_offset), format_(h.format) {
-    line_ = 1 + static_cast<std::size_t>(std::count(data.begin(), data.begin() + static_cast<std::ptrdiff_t>(pos_), '\n'));
+    line_ =
+        1 + static_cast<std::size_t>(std::count(data.begin(), data.begin() + static_cast<std::ptrdiff_t>(pos_), '\n'));
   }
 
   void at(const PlyElement& e, unsigned long long item) { element_ = &e, item_ = item; }
@@ -216,8 +216,9 @@ class PlyBodyReader {
     if (format_ == PlyHeader::Ascii) {
       const std::string_view w = word();
       const auto v = parse_strict_integer(w, t.lo, t.hi);
-      if (!v) fail(quote_word(name) + " value " + quote_word(w) + " is not a " + t.name + " (an integer in " +
-                   std::to_string(t.lo) + ".." + std::to_string(t.hi) + ")");
+      if (!v)
+        fail(quote_word(name) + " value " + quote_word(w) + " is not a " + t.name + " (an integer in " +
+             std::to_string(t.lo) + ".." + std::to_string(t.hi) + ")");
       return *v;
     }
     const std::uint64_t u = bytes(t.bytes);
@@ -269,7 +270,8 @@ class PlyBodyReader {
     std::uint64_t u = 0;
     const bool big = format_ == PlyHeader::BinaryBigEndian;
     for (int i = 0; i < n; ++i)
-      u |= std::uint64_t(static_cast<unsigned char>(data_[pos_ + static_cast<std::size_t>(i)])) << (8 * (big ? n - 1 - i : i));
+      u |= std::uint64_t(static_cast<unsigned char>(data_[pos_ + static_cast<std::size_t>(i)]))
+           << (8 * (big ? n - 1 - i : i));
     pos_ += static_cast<std::size_t>(n);
     return u;
   }
@@ -313,7 +315,8 @@ void read_ply(const std::string& path, std::string_view data, Soup& soup) {
         uchar = uchar && (t == "uchar" || t == "uint8");
       }
       if (!uchar) col[0] = col[1] = col[2] = -1;
-      static const char* const uv_names[][2] = {{"texture_u", "texture_v"}, {"u", "v"}, {"s", "t"}, {"texture_s", "texture_t"}};
+      static const char* const uv_names[][2] = {
+          {"texture_u", "texture_v"}, {"u", "v"}, {"s", "t"}, {"texture_s", "texture_t"}};
       for (const auto& names : uv_names)
         if (iu < 0 && find_scalar(e, names[0]) >= 0 && find_scalar(e, names[1]) >= 0)
           iu = find_scalar(e, names[0]), iv = find_scalar(e, names[1]);

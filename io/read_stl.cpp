@@ -71,7 +71,8 @@ void read_stl(const std::string& path, std::string_view data, Soup& soup) {
     // When its ascii parse fails CGAL retries as binary, which "succeeds" on files shorter
     // than a binary header; the facet count tells.
     std::size_t facets = 0;
-    for (std::size_t at = data.find("endfacet"); at != std::string_view::npos; at = data.find("endfacet", at + 8)) ++facets;
+    for (std::size_t at = data.find("endfacet"); at != std::string_view::npos; at = data.find("endfacet", at + 8))
+      ++facets;
     ok = facets == soup.polygons.size();
   }
   if (!ok)

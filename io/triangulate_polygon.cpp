@@ -51,7 +51,8 @@ std::vector<P2> project_to_best_fit_plane(const std::vector<Point>& points, cons
   const double v[3] = {N[1] * u[2] - N[2] * u[1], N[2] * u[0] - N[0] * u[2], N[0] * u[1] - N[1] * u[0]};
   std::vector<P2> q(n);
   for (std::size_t k = 0; k < n; ++k)
-    q[k] = {rel(k, 0) * u[0] + rel(k, 1) * u[1] + rel(k, 2) * u[2], rel(k, 0) * v[0] + rel(k, 1) * v[1] + rel(k, 2) * v[2]};
+    q[k] = {rel(k, 0) * u[0] + rel(k, 1) * u[1] + rel(k, 2) * u[2],
+            rel(k, 0) * v[0] + rel(k, 1) * v[1] + rel(k, 2) * v[2]};
   return q;
 }
 

@@ -1,5 +1,7 @@
 // write_mesh: the checks before writing and the writer of the path's format (write_obj.cpp,
 // write_off.cpp, write_ply.cpp, write_stl.cpp), through write_file_atomically.
+#include "msmesh/write_mesh.h"
+
 #include <Eigen/Core>
 #include <cmath>
 #include <ostream>
@@ -8,7 +10,6 @@
 #include "msmesh/atomic_file.h"
 #include "msmesh/errors.h"
 #include "msmesh/mesh_format.h"
-#include "msmesh/write_mesh.h"
 #include "write_common.h"
 
 namespace msmesh {
@@ -18,7 +19,8 @@ void check_for_writing(const std::string& path, const Mesh& mesh) {
   const Eigen::MatrixXd& V = mesh.V;
   const Eigen::MatrixXi& F = mesh.F;
   auto fail = [&path](const std::string& what) { throw InvalidInput(path + ": cannot write mesh: " + what); };
-  if (V.cols() != 3) fail("vertex array must be #V by 3, got " + std::to_string(V.rows()) + " by " + std::to_string(V.cols()));
+  if (V.cols() != 3)
+    fail("vertex array must be #V by 3, got " + std::to_string(V.rows()) + " by " + std::to_string(V.cols()));
   if (F.rows() > 0 && F.cols() != 3)
     fail("face array must be #F by 3, got " + std::to_string(F.rows()) + " by " + std::to_string(F.cols()));
   for (Eigen::Index i = 0; i < V.rows(); ++i)

@@ -11,7 +11,8 @@ void write_obj(OutBuffer& o, const Mesh& m) {
   for (Eigen::Index i = 0; i < m.V.rows(); ++i) {
     o.text("v ").real(m.V(i, 0)).ch(' ').real(m.V(i, 1)).ch(' ').real(m.V(i, 2));
     // "v x y z r g b" is a widespread extension; readers that do not know it ignore the rest.
-    if (colors) o.ch(' ').real(m.vertex_colors(i, 0)).ch(' ').real(m.vertex_colors(i, 1)).ch(' ').real(m.vertex_colors(i, 2));
+    if (colors)
+      o.ch(' ').real(m.vertex_colors(i, 0)).ch(' ').real(m.vertex_colors(i, 1)).ch(' ').real(m.vertex_colors(i, 2));
     o.ch('\n');
   }
   if (uv)
@@ -19,7 +20,13 @@ void write_obj(OutBuffer& o, const Mesh& m) {
   const bool normals = m.vertex_normals.size() > 0;
   if (normals)
     for (Eigen::Index i = 0; i < m.vertex_normals.rows(); ++i)
-      o.text("vn ").real(m.vertex_normals(i, 0)).ch(' ').real(m.vertex_normals(i, 1)).ch(' ').real(m.vertex_normals(i, 2)).ch('\n');
+      o.text("vn ")
+          .real(m.vertex_normals(i, 0))
+          .ch(' ')
+          .real(m.vertex_normals(i, 1))
+          .ch(' ')
+          .real(m.vertex_normals(i, 2))
+          .ch('\n');
   for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
     o.ch('f');
     for (int k = 0; k < 3; ++k) {

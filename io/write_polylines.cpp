@@ -1,4 +1,6 @@
 // write_polylines: OBJ (v and l records) or ascii PLY (vertices and edge elements).
+#include "msmesh/write_polylines.h"
+
 #include <Eigen/Core>
 #include <cmath>
 #include <cstddef>
@@ -9,7 +11,6 @@
 #include "msmesh/atomic_file.h"
 #include "msmesh/errors.h"
 #include "msmesh/mesh_format.h"
-#include "msmesh/write_polylines.h"
 #include "write_common.h"
 
 namespace msmesh {
@@ -52,8 +53,7 @@ void write_polylines(const std::string& path, const Eigen::MatrixXd& P, const st
       o.text("\nproperty double x\nproperty double y\nproperty double z\nelement edge ")
           .integer(static_cast<long long>(num_edges))
           .text("\nproperty int vertex1\nproperty int vertex2\nend_header\n");
-      for (Eigen::Index i = 0; i < P.rows(); ++i)
-        o.real(P(i, 0)).ch(' ').real(P(i, 1)).ch(' ').real(P(i, 2)).ch('\n');
+      for (Eigen::Index i = 0; i < P.rows(); ++i) o.real(P(i, 0)).ch(' ').real(P(i, 1)).ch(' ').real(P(i, 2)).ch('\n');
       for (const auto& line : lines)
         for (std::size_t k = 1; k < line.size(); ++k) o.integer(line[k - 1]).ch(' ').integer(line[k]).ch('\n');
     }

@@ -1,14 +1,15 @@
 // Bilateral normal filtering (Zheng et al. 2011, local iterative scheme) and the classic
 // vertex update (Sun et al. 2007): the widely used reference denoiser users compare against.
+#include "msmesh/bilateral.h"
+
 #include <cmath>
 #include <sstream>
 #include <vector>
 
-#include "msmesh/bilateral.h"
 #include "msmesh/errors.h"
-#include "msmesh/parameters.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
+#include "msmesh/parameters.h"
 #include "normalize.h"
 
 namespace msmesh {
@@ -48,8 +49,8 @@ void face_vertex_neighbours(const Eigen::MatrixXi& F, Eigen::Index nv, std::vect
 
 }  // namespace
 
-Eigen::MatrixXd bilateral_filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
-                                         const BilateralOptions& o, const ProgressCallback& progress) {
+Eigen::MatrixXd bilateral_filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const BilateralOptions& o,
+                                         const ProgressCallback& progress) {
   o.validate();
   validate_mesh(V, F, "bilateral filtering");
   const detail::Normalization norm = detail::normalization_for(V, F);

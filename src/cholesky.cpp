@@ -43,7 +43,9 @@ struct FixedCholesky::Impl {
 
 FixedCholesky::FixedCholesky(const SparseMatrix& A, const std::string& what) : impl_(std::make_unique<Impl>()) {
   cholmod_common& c = impl_->common.c;
-  const auto failed = [&](const char* why) { return SolverError(what + ": Cholesky factorisation failed (" + why + ")"); };
+  const auto failed = [&](const char* why) {
+    return SolverError(what + ": Cholesky factorisation failed (" + why + ")");
+  };
   // A view of A's lower triangle (A is stored whole and symmetric).
   cholmod_sparse view{};
   view.nrow = view.ncol = static_cast<size_t>(A.rows());
@@ -117,8 +119,8 @@ FixedCholesky::FixedCholesky(const SparseMatrix& A, const std::string& what) : i
 #pragma omp parallel for num_threads(tree_threads()) schedule(static, 1)
     for (int s = 0; s < 2; ++s)
       for (const TreeSplit::Range& r : split.sets[s])
-        if (ok[s] && !cholmod_rowfac(S, nullptr, beta, static_cast<size_t>(r.begin), static_cast<size_t>(r.end), &part[s],
-                                     &set_common[s].c))
+        if (ok[s] && !cholmod_rowfac(S, nullptr, beta, static_cast<size_t>(r.begin), static_cast<size_t>(r.end),
+                                     &part[s], &set_common[s].c))
           ok[s] = false;
     if (!ok[0] || !ok[1] || part[0].i != L->i || part[1].i != L->i || part[0].x != L->x || part[1].x != L->x)
       throw failed("CHOLMOD row factorisation (out of memory?)");

@@ -1,10 +1,10 @@
 #include "msmesh/denoise.h"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
-#include <utility>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "msmesh/errors.h"
@@ -118,11 +118,13 @@ DenoiseResult denoise_components(const Eigen::MatrixXd& V, const Eigen::MatrixXi
     if (!(mean_edge_length(sub.V, sub.F) > 0)) continue;  // all faces degenerate: nothing to scale, kept as it is
     DenoiseResult rc = denoise(sub.V, sub.F, o, progress);
     for (std::size_t i = 0; i < global.size(); ++i) r.V.row(global[i]) = rc.V.row(static_cast<Eigen::Index>(i));
-    for (std::size_t i = 0; i < faces.size(); ++i) r.normals.row(faces[i]) = rc.normals.row(static_cast<Eigen::Index>(i));
+    for (std::size_t i = 0; i < faces.size(); ++i)
+      r.normals.row(faces[i]) = rc.normals.row(static_cast<Eigen::Index>(i));
     if (has_field) {
       const Topology tc = build_topology(sub.F, sub.V.rows());
       for (std::size_t i = 0; i < faces.size(); ++i)
-        for (int k = 0; k < 3; ++k) r.v(topo.face_edges(faces[i], k)) = rc.v(tc.face_edges(static_cast<Eigen::Index>(i), k));
+        for (int k = 0; k < 3; ++k)
+          r.v(topo.face_edges(faces[i], k)) = rc.v(tc.face_edges(static_cast<Eigen::Index>(i), k));
     }
     if (largest < 0 || static_cast<Eigen::Index>(faces.size()) > largest) {
       largest = static_cast<Eigen::Index>(faces.size());

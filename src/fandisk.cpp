@@ -1,12 +1,10 @@
 // The CAD-like part make_fandisk_like (shapes.h): a planar profile of lines and one arc,
 // extruded along z, meshed patch by patch (patch_mesher.h).
-#include "msmesh/shapes.h"
-
 #include <Eigen/Geometry>
-
 #include <cmath>
 #include <vector>
 
+#include "msmesh/shapes.h"
 #include "patch_mesher.h"
 #include "shape_builder.h"
 
@@ -89,19 +87,19 @@ class Turtle {
 /// (between outward normals) at its corners are noted on each turn.
 std::vector<ProfileSegment> fandisk_profile() {
   Turtle t;
-  t.line(2.0);       // bottom
-  t.turn(90);        // 90°
-  t.line(0.4);       // right wall
-  t.turn(45);        // 45°
-  t.line(0.35);      // chamfer
-  t.turn(30);        // 30°
-  t.arc(1.5, 40);    // cylindrical roof …
-  t.line(0.3);       // … blending tangentially into a flat slope (one smooth patch)
-  t.turn(-115);      // 115°, concave
-  t.line(0.25);      // step wall
-  t.turn(90);        // 90°
+  t.line(2.0);               // bottom
+  t.turn(90);                // 90°
+  t.line(0.4);               // right wall
+  t.turn(45);                // 45°
+  t.line(0.35);              // chamfer
+  t.turn(30);                // 30°
+  t.arc(1.5, 40);            // cylindrical roof …
+  t.line(0.3);               // … blending tangentially into a flat slope (one smooth patch)
+  t.turn(-115);              // 115°, concave
+  t.line(0.25);              // step wall
+  t.turn(90);                // 90°
   t.line(t.position().x());  // tower top
-  t.turn(90);        // 90°
+  t.turn(90);                // 90°
   t.line(t.position().y());  // left wall, back down to the start (90° with the bottom)
   return t.close();
 }
@@ -137,7 +135,8 @@ Mesh make_fandisk_like(int n) {
   for (int j = 0; j < k; ++j) {
     const Vec2 p = profile[j].a;
     const ProfileSegment& s = profile[j];
-    along[j] = mesher.add_curve(back[j], front[j], [&](double t) { return Vec3(p.x(), p.y(), t * fandisk_front_z(p)); });
+    along[j] =
+        mesher.add_curve(back[j], front[j], [&](double t) { return Vec3(p.x(), p.y(), t * fandisk_front_z(p)); });
     back_curve[j] = mesher.add_curve(back[j], back[(j + 1) % k], [&](double t) {
       const Vec2 x = s.at(t);
       return Vec3(x.x(), x.y(), 0);

@@ -13,10 +13,10 @@
 #include <utility>
 
 #include "format_number.h"
-#include "sub_mesh.h"
 #include "msmesh/geometry.h"
 #include "msmesh/normal_filter.h"
 #include "msmesh/vertex_update.h"
+#include "sub_mesh.h"
 
 namespace msmesh::detail {
 
@@ -169,8 +169,9 @@ int flip_towards_targets(const Eigen::MatrixXd& V, Eigen::MatrixXi& F, const std
 // len(e)/|b_f − b_g|) of the surrounding normals, with no coupling across jump edges (filtered
 // normals more than the hole's jump angle apart) — the edge set — and a weak pull (1e-3) towards the
 // NMSTV normals so that a region enclosed by jumps stays determined. Rows are renormalised.
-Eigen::MatrixXd piecewise_smooth_normals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::vector<bool>& is_new,
-                                         const Eigen::MatrixXd& N, const Eigen::VectorXd& jump_angle_deg) {
+Eigen::MatrixXd piecewise_smooth_normals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                                         const std::vector<bool>& is_new, const Eigen::MatrixXd& N,
+                                         const Eigen::VectorXd& jump_angle_deg) {
   const Eigen::Index nf = F.rows();
   std::vector<int> unknown(static_cast<size_t>(nf), -1);
   int n = 0;
@@ -316,8 +317,10 @@ bool crease_enters(const std::vector<int>& loop, const Topology& topo, const Eig
   for (int e : edges) {
     const double deg = dihedral(e) * 180.0 / kPi;
     if (deg > 30) weakest_crease = std::min(weakest_crease, deg);
-    if (dihedral(e) > sharp_rad) ++sharp;
-    else other.push_back(dihedral(e) * 180.0 / kPi);
+    if (dihedral(e) > sharp_rad)
+      ++sharp;
+    else
+      other.push_back(dihedral(e) * 180.0 / kPi);
   }
   double median = 0;
   if (!other.empty()) {
@@ -325,8 +328,8 @@ bool crease_enters(const std::vector<int>& loop, const Topology& topo, const Eig
     median = other[other.size() / 2];
   }
   const bool yes = sharp >= 2 && median < o.smooth_angle;
-  why = std::to_string(sharp) + " sharp edges (> " + num(o.feature_angle) + " deg) at its boundary, median of the others " +
-        num(median) + " deg";
+  why = std::to_string(sharp) + " sharp edges (> " + num(o.feature_angle) +
+        " deg) at its boundary, median of the others " + num(median) + " deg";
   return yes;
 }
 
@@ -427,7 +430,8 @@ void recover_features(Eigen::MatrixXd& V1, Eigen::MatrixXi& F1, Eigen::Index nv0
         for (Eigen::Index i = 0; i < nvs; ++i)
           if (free_index[i] >= 0) Vs.row(i) = Vn.row(i) * len;
     }
-    res.vertex_report = update_vertices(Vs, Fs, res.normal_report.normals, res.normal_report.v, o.vertices, vw, progress);
+    res.vertex_report =
+        update_vertices(Vs, Fs, res.normal_report.normals, res.normal_report.v, o.vertices, vw, progress);
     // Only free vertices take the update; pinned ones keep their exact positions.
     for (Eigen::Index i = 0; i < nvs; ++i)
       if (is_free[global[i]]) Vs.row(i) = res.vertex_report.V.row(i);

@@ -14,10 +14,10 @@ namespace msmesh::detail {
 
 // A filled hole as the feature recovery sees it.
 struct FilledHole {
-  int index = 0;                 // into InpaintResult::holes / reports
+  int index = 0;  // into InpaintResult::holes / reports
   const std::vector<int>* loop = nullptr;
   int first_face = 0, face_count = 0, first_vertex = 0, vertex_count = 0;
-  double jump_angle = 60;        // degrees: normals further apart inside form the edge set
+  double jump_angle = 60;  // degrees: normals further apart inside form the edge set
 };
 
 // Does a crease of the input run into this hole? Looks at the interior edges of the input at

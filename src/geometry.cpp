@@ -1,8 +1,8 @@
 #include "msmesh/geometry.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <Eigen/Geometry>
 
 namespace msmesh {
 
@@ -37,15 +37,13 @@ Eigen::MatrixXd face_normals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F)
 
 Eigen::MatrixXd face_barycenters(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   Eigen::MatrixXd B(F.rows(), 3);
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    B.row(f) = (V.row(F(f, 0)) + V.row(F(f, 1)) + V.row(F(f, 2))) / 3.0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f) B.row(f) = (V.row(F(f, 0)) + V.row(F(f, 1)) + V.row(F(f, 2))) / 3.0;
   return B;
 }
 
 Eigen::VectorXd edge_lengths(const Eigen::MatrixXd& V, const Topology& topo) {
   Eigen::VectorXd l(topo.num_edges());
-  for (Eigen::Index e = 0; e < topo.num_edges(); ++e)
-    l(e) = (V.row(topo.edges(e, 0)) - V.row(topo.edges(e, 1))).norm();
+  for (Eigen::Index e = 0; e < topo.num_edges(); ++e) l(e) = (V.row(topo.edges(e, 0)) - V.row(topo.edges(e, 1))).norm();
   return l;
 }
 

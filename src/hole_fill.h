@@ -9,18 +9,18 @@ namespace msmesh::detail {
 
 /// What happened to one hole handed to fill_holes_cgal().
 struct CgalHoleOutcome {
-  bool filled = false;      ///< a patch was added (false: the mesh is unchanged for this hole)
-  bool faired = false;      ///< the fairing solve succeeded (a filled but unfaired patch is kept)
-  int first_face = 0;       ///< new faces of this hole: rows [first_face, first_face + face_count) of F
+  bool filled = false;  ///< a patch was added (false: the mesh is unchanged for this hole)
+  bool faired = false;  ///< the fairing solve succeeded (a filled but unfaired patch is kept)
+  int first_face = 0;   ///< new faces of this hole: rows [first_face, first_face + face_count) of F
   int face_count = 0;
-  int first_vertex = 0;     ///< new vertices of this hole: rows [first_vertex, first_vertex + vertex_count) of V
+  int first_vertex = 0;  ///< new vertices of this hole: rows [first_vertex, first_vertex + vertex_count) of V
   int vertex_count = 0;
-  std::string error;        ///< why the hole was not filled (empty when filled)
+  std::string error;  ///< why the hole was not filled (empty when filled)
 };
 
 struct CgalFillResult {
-  Eigen::MatrixXd V;  ///< #V' by 3: the input rows first (copied bit for bit), then new vertices
-  Eigen::MatrixXi F;  ///< #F' by 3: the input rows first, in order, then the new faces
+  Eigen::MatrixXd V;                   ///< #V' by 3: the input rows first (copied bit for bit), then new vertices
+  Eigen::MatrixXi F;                   ///< #F' by 3: the input rows first, in order, then the new faces
   std::vector<CgalHoleOutcome> holes;  ///< one per requested loop, in order
 };
 

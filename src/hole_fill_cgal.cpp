@@ -105,9 +105,9 @@ CgalFillResult fill_holes_cgal(const Eigen::MatrixXd& V, const Eigen::MatrixXi& 
       std::vector<FaceIndex> patch_faces;
       std::vector<VertexIndex> patch_vertices;
       if (fair) {
-        const auto r = PMP::triangulate_refine_and_fair_hole(
-            mesh, h, std::back_inserter(patch_faces), std::back_inserter(patch_vertices),
-            CGAL::parameters::density_control_factor(density));
+        const auto r = PMP::triangulate_refine_and_fair_hole(mesh, h, std::back_inserter(patch_faces),
+                                                             std::back_inserter(patch_vertices),
+                                                             CGAL::parameters::density_control_factor(density));
         out.faired = std::get<0>(r);
       } else {
         PMP::triangulate_and_refine_hole(mesh, h, std::back_inserter(patch_faces), std::back_inserter(patch_vertices),

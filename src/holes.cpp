@@ -107,7 +107,8 @@ std::vector<Hole> find_holes(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F)
     verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
     double d2 = 0;
     for (size_t a = 0; a < verts.size(); ++a)
-      for (size_t b = a + 1; b < verts.size(); ++b) d2 = std::max(d2, (V.row(verts[a]) - V.row(verts[b])).squaredNorm());
+      for (size_t b = a + 1; b < verts.size(); ++b)
+        d2 = std::max(d2, (V.row(verts[a]) - V.row(verts[b])).squaredNorm());
     hole.diameter = std::sqrt(d2) / h;
     // Vector area ½ Σ p_k × p_{k+1} of the closed walk: the area of a planar loop, the
     // projected area of a bent one (a lower bound of any surface spanning it).

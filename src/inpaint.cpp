@@ -22,8 +22,8 @@
 
 namespace msmesh {
 
-using detail::FilledHole;
 using detail::crease_enters;
+using detail::FilledHole;
 using detail::num;
 using detail::recover_features;
 
@@ -80,15 +80,16 @@ InpaintResult inpaint(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
     if (!listed[i]) {
       r.reason = "not in the list of holes to fill";
     } else if (!hole.simple) {
-      r.reason = "its boundary touches itself at vertex " + std::to_string(hole.touching_vertex) +
-                 " (not a simple loop)";
+      r.reason =
+          "its boundary touches itself at vertex " + std::to_string(hole.touching_vertex) + " (not a simple loop)";
     } else if (o.holes.empty() && hole.outer_boundary && !o.fill_outer_boundary) {
       r.reason = "outer boundary of an open surface (diameter " + num(hole.diameter) +
                  " mean edge lengths, at least half its component's bounding-box diagonal)";
     } else if (o.holes.empty() && o.max_hole_edges > 0 && hole.edges > o.max_hole_edges) {
       r.reason = std::to_string(hole.edges) + " boundary edges > max_hole_edges " + std::to_string(o.max_hole_edges);
     } else if (o.holes.empty() && o.max_hole_diameter > 0 && hole.diameter > o.max_hole_diameter) {
-      r.reason = "diameter " + num(hole.diameter) + " mean edge lengths > max_hole_diameter " + num(o.max_hole_diameter);
+      r.reason =
+          "diameter " + num(hole.diameter) + " mean edge lengths > max_hole_diameter " + num(o.max_hole_diameter);
     } else {
       selected.push_back(i);
     }
@@ -135,9 +136,12 @@ InpaintResult inpaint(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
     for (Eigen::Index i = V.rows(); i < res.V.rows(); ++i) res.new_vertices[i] = true;
   }
   for (const HoleReport& r : res.reports) {
-    if (r.action == HoleAction::Filled) ++res.filled;
-    else if (r.action == HoleAction::Skipped) ++res.skipped;
-    else ++res.failed;
+    if (r.action == HoleAction::Filled)
+      ++res.filled;
+    else if (r.action == HoleAction::Skipped)
+      ++res.skipped;
+    else
+      ++res.failed;
   }
   const auto t1 = std::chrono::steady_clock::now();
   res.seconds_fill = std::chrono::duration<double>(t1 - t0).count();

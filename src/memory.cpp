@@ -33,10 +33,17 @@ std::uint64_t env_limit() {
   double mult = 1;
   if (*end) {
     switch (std::toupper(static_cast<unsigned char>(*end))) {
-      case 'K': mult = 1024.0; break;
-      case 'M': mult = 1024.0 * 1024; break;
-      case 'G': mult = 1024.0 * 1024 * 1024; break;
-      default: refuse();
+      case 'K':
+        mult = 1024.0;
+        break;
+      case 'M':
+        mult = 1024.0 * 1024;
+        break;
+      case 'G':
+        mult = 1024.0 * 1024 * 1024;
+        break;
+      default:
+        refuse();
     }
     if (end[1] != '\0' && !((end[1] == 'B' || end[1] == 'b') && end[2] == '\0')) refuse();
   }
@@ -85,11 +92,10 @@ void check_memory(double bytes, const std::string& what) {
   const std::uint64_t avail = available_memory_bytes();
   if (avail == 0 || !(bytes > static_cast<double>(avail))) return;
   const bool from_env = env > 0 && (sys == 0 || env < sys);
-  throw InvalidInput(what + ": needs about " + human(bytes) + " of memory, but only " + human(double(avail)) +
-                     " is available (" +
-                     (from_env ? std::string("limit set by MSMESH_MEMORY_LIMIT")
-                               : std::string("MemAvailable in /proc/meminfo")) +
-                     ")");
+  throw InvalidInput(
+      what + ": needs about " + human(bytes) + " of memory, but only " + human(double(avail)) + " is available (" +
+      (from_env ? std::string("limit set by MSMESH_MEMORY_LIMIT") : std::string("MemAvailable in /proc/meminfo")) +
+      ")");
 }
 
 }  // namespace msmesh

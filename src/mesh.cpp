@@ -34,8 +34,8 @@ void validate_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std
     const double span = V.col(c).maxCoeff() - V.col(c).minCoeff();
     if (!(span <= kMaxSpan)) {
       std::ostringstream os;
-      os << what << ": the vertex coordinates span " << span << " along axis " << "xyz"[c]
-         << ", more than 1e150: their squared distances overflow; scale the mesh down";
+      os << what << ": the vertex coordinates span " << span << " along axis "
+         << "xyz"[c] << ", more than 1e150: their squared distances overflow; scale the mesh down";
       throw InvalidInput(os.str());
     }
   }
@@ -50,8 +50,7 @@ void validate_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std
     }
     if (F(f, 0) == F(f, 1) || F(f, 1) == F(f, 2) || F(f, 0) == F(f, 2)) {
       std::ostringstream os;
-      os << what << ": face " << f << " repeats a vertex (" << F(f, 0) << ", " << F(f, 1) << ", " << F(f, 2)
-         << ")";
+      os << what << ": face " << f << " repeats a vertex (" << F(f, 0) << ", " << F(f, 1) << ", " << F(f, 2) << ")";
       throw InvalidInput(os.str());
     }
   }

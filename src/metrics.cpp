@@ -292,7 +292,8 @@ InpaintErrors inpaint_errors(const Eigen::MatrixXd& V_input, const Eigen::Matrix
     throw InvalidInput("inpainting errors: new_faces must have one flag per result face");
   const std::vector<int> truth_rows = referenced_vertices(V_truth.rows(), F_truth);
   Eigen::MatrixXd truth_pts(static_cast<Eigen::Index>(truth_rows.size()), 3);
-  for (size_t i = 0; i < truth_rows.size(); ++i) truth_pts.row(static_cast<Eigen::Index>(i)) = V_truth.row(truth_rows[i]);
+  for (size_t i = 0; i < truth_rows.size(); ++i)
+    truth_pts.row(static_cast<Eigen::Index>(i)) = V_truth.row(truth_rows[i]);
   const double diag = bounding_box_diagonal(truth_pts);
   if (!(diag > 0)) throw InvalidInput("inpainting errors: the truth has a zero-size bounding box");
 

@@ -18,12 +18,18 @@ const ParameterTable<MulticutOptions>& multicut_parameters() {
   using O = MulticutOptions;
   using T = ParameterType;
   static const ParameterTable<O> t = {
-      bind_parameter(ParameterInfo{"max-local-rounds", "", "", T::Integer, {0, 2147483647},
-                                   "maximum rounds of the local search", "multicut"},
+      bind_parameter(ParameterInfo{"max-local-rounds",
+                                   "",
+                                   "",
+                                   T::Integer,
+                                   {0, 2147483647},
+                                   "maximum rounds of the local search",
+                                   "multicut"},
                      &O::max_local_rounds),
-      bind_parameter(ParameterInfo{"tolerance", "", "", T::Real, {0},
-                                   "a move must lower the objective by more than this", "multicut"},
-                     &O::tolerance),
+      bind_parameter(
+          ParameterInfo{
+              "tolerance", "", "", T::Real, {0}, "a move must lower the objective by more than this", "multicut"},
+          &O::tolerance),
   };
   return t;
 }
@@ -56,8 +62,7 @@ void check_input(Eigen::Index num_nodes, const Eigen::MatrixXi& edges, const Eig
       if (edges(e, k) < 0 || edges(e, k) >= num_nodes)
         throw InvalidInput("multicut: edge " + std::to_string(e) + " refers to node " + std::to_string(edges(e, k)) +
                            ", valid: [0, " + std::to_string(num_nodes) + ")");
-    if (!std::isfinite(costs(e)))
-      throw InvalidInput("multicut: cost of edge " + std::to_string(e) + " is not finite");
+    if (!std::isfinite(costs(e))) throw InvalidInput("multicut: cost of edge " + std::to_string(e) + " is not finite");
   }
 }
 
@@ -76,7 +81,8 @@ Graph build_graph(Eigen::Index num_nodes, const Eigen::MatrixXi& edges, const Ei
     if (i > j) std::swap(i, j);
     items.push_back({i, j, costs(e)});
   }
-  std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
+  std::sort(items.begin(), items.end(),
+            [](const Item& a, const Item& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
   for (size_t k = 0; k < items.size();) {
     size_t l = k;
     double c = 0;

@@ -19,14 +19,25 @@ const ParameterTable<NoiseOptions>& noise_parameters() {
   static const ParameterTable<O> t = {
       // σ beyond a million mean edge lengths only moves vertices out of any meaningful range
       // (1e308 made every coordinate infinite).
-      bind_parameter(ParameterInfo{"sigma", "σ", "mean edge lengths", T::Real, {0, 1e6},
-                                   "standard deviation of the displacement", "noise"},
-                     &O::sigma),
-      bind_parameter(ParameterInfo{"impulsive", "", "", T::Real, {0, 1},
-                                   "displace only this fraction of the vertices (0: every vertex)", "noise"},
+      bind_parameter(
+          ParameterInfo{
+              "sigma", "σ", "mean edge lengths", T::Real, {0, 1e6}, "standard deviation of the displacement", "noise"},
+          &O::sigma),
+      bind_parameter(ParameterInfo{"impulsive",
+                                   "",
+                                   "",
+                                   T::Real,
+                                   {0, 1},
+                                   "displace only this fraction of the vertices (0: every vertex)",
+                                   "noise"},
                      &O::impulsive_fraction),
-      bind_parameter(ParameterInfo{"seed", "", "", T::Integer, {0, kLargestExactInteger},
-                                   "random seed; the same seed gives the same mesh on any machine", "noise"},
+      bind_parameter(ParameterInfo{"seed",
+                                   "",
+                                   "",
+                                   T::Integer,
+                                   {0, kLargestExactInteger},
+                                   "random seed; the same seed gives the same mesh on any machine",
+                                   "noise"},
                      &O::seed),
   };
   return t;

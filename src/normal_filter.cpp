@@ -6,10 +6,10 @@
 #include <sstream>
 
 #include "msmesh/errors.h"
-#include "msmesh/parameters.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
 #include "msmesh/operators.h"
+#include "msmesh/parameters.h"
 #include "msmesh/topology.h"
 #include "normalize.h"
 #include "parallel.h"
@@ -95,7 +95,8 @@ SparseMatrix edge_smoothness_matrix(const Topology& topo, const Eigen::VectorXd&
   {
     std::vector<int> fill(first.begin(), first.end() - 1);
     for (Eigen::Index f = 0; f < nf; ++f)
-      for (int j = 0; j < 3; ++j) inc[static_cast<size_t>(fill[static_cast<size_t>(topo.face_edges(f, j))]++)] = static_cast<int>(3 * f + j);
+      for (int j = 0; j < 3; ++j)
+        inc[static_cast<size_t>(fill[static_cast<size_t>(topo.face_edges(f, j))]++)] = static_cast<int>(3 * f + j);
   }
   return detail::symmetric_from_rows(
       ne, [&](Eigen::Index e) { return 1 + 2 * (first[static_cast<size_t>(e) + 1] - first[static_cast<size_t>(e)]); },
@@ -168,11 +169,11 @@ class NormalFilterRun {
   const Eigen::Index nf_, ne_;
   const Eigen::VectorXd face_alpha_, edge_beta_;
   Eigen::MatrixXd N0_;
-  Eigen::VectorXd fid_weight_;       // 2α s_f (floored) per face
+  Eigen::VectorXd fid_weight_;  // 2α s_f (floored) per face
   std::optional<detail::ConstantSystem> n_system_;
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> gt_weight_;  // Gᵀ L per face
   Eigen::VectorXd smooth_diag_, v_rhs_, v_diag_;  // diagonal of 2βε Dᵀ L_W D; the v-step's b and diagonal
-  std::optional<detail::BlockPcg> v_system_;  // the v-step matrix; its diagonal is set per iteration
+  std::optional<detail::BlockPcg> v_system_;      // the v-step matrix; its diagonal is set per iteration
   Rows N0r_, N_, N_prev_, N_next_, rhs_, q_, lambda_;
   Eigen::VectorXd v_, w_;
   NormalFilterResult res_;
@@ -251,9 +252,8 @@ void NormalFilterRun::assemble_n_step() {
   // weights switch the fidelity off somewhere (inpainting): the matrix then loses its
   // diagonal dominance and the factorisation is faster at any size (docs/performance.md).
   constexpr Eigen::Index kCgMinFaces = 80000;
-  const bool use_cg =
-      o_.solver == LinearSolver::CG ||
-      (o_.solver == LinearSolver::Auto && nf_ >= kCgMinFaces && face_alpha_.minCoeff() >= 0.5);
+  const bool use_cg = o_.solver == LinearSolver::CG ||
+                      (o_.solver == LinearSolver::Auto && nf_ >= kCgMinFaces && face_alpha_.minCoeff() >= 0.5);
   n_system_.emplace(A, use_cg, "normal filtering (N-step)");
 
   // Gᵀ L per face: face f meets edge face_edges(f,k) with sign gt_sign(f,k) (+1 when f is the
@@ -297,10 +297,10 @@ void NormalFilterRun::n_step(Rows& N_out, const Rows& fallback) {
 // The stopping test's ‖N^{k+1} − N^k‖_U.
 double NormalFilterRun::normal_change() const {
   const Eigen::VectorXd& area = ops_.face_areas;
-  return std::sqrt(std::max(0.0, detail::deterministic_sums<1>(nf_, [&](Eigen::Index f0, Eigen::Index f1,
-                                                                          std::array<double, 1>& s) {
-    for (Eigen::Index f = f0; f < f1; ++f) s[0] += area(f) * (N_.row(f) - N_prev_.row(f)).squaredNorm();
-  })[0]));
+  return std::sqrt(
+      std::max(0.0, detail::deterministic_sums<1>(nf_, [&](Eigen::Index f0, Eigen::Index f1, std::array<double, 1>& s) {
+                 for (Eigen::Index f = f0; f < f1; ++f) s[0] += area(f) * (N_.row(f) - N_prev_.row(f)).squaredNorm();
+               })[0]));
 }
 
 // 2.+4. One pass over the edges: p-step (eq. 22: vector soft threshold of ψ = ∇N − λ/r by
@@ -328,7 +328,8 @@ double NormalFilterRun::edge_pass() {
       lambda_.row(e) += o.relaxation * o.penalty * r;
       q_.row(e) = o.penalty * pe + lambda_.row(e);
       s[0] += len(e) * r.squaredNorm();
-      v_diag_(e) = smooth_diag_(e) + len(e) * (2 * o.gamma * w_(e) * pe_norm + edge_beta_(e) * o.beta / (2 * o.epsilon));
+      v_diag_(e) =
+          smooth_diag_(e) + len(e) * (2 * o.gamma * w_(e) * pe_norm + edge_beta_(e) * o.beta / (2 * o.epsilon));
       w_(e) = irla_weight(pe_norm, o);
     }
   })[0];
@@ -405,8 +406,7 @@ NormalFilterResult NormalFilterRun::run(const ProgressCallback& progress) {
     res_.residual_history.push_back(std::sqrt(std::max(0.0, resid2)));
     res_.change_history.push_back(change);
     if (o_.record_energy)
-      res_.energy_history.push_back(
-          energy_normalised(ops_, Eigen::MatrixXd(N_), v_, N0_, o_, face_alpha_, edge_beta_));
+      res_.energy_history.push_back(energy_normalised(ops_, Eigen::MatrixXd(N_), v_, N0_, o_, face_alpha_, edge_beta_));
     res_.iterations = k + 1;
 
     if (progress) {

@@ -12,14 +12,11 @@ struct Normalization {
   double scale = 1.0;  ///< mean edge length of the input
 
   Eigen::MatrixXd apply(const Eigen::MatrixXd& V) const { return (V.rowwise() - center) / scale; }
-  Eigen::MatrixXd undo(const Eigen::MatrixXd& Vn) const {
-    return (Vn * scale).rowwise() + center;
-  }
+  Eigen::MatrixXd undo(const Eigen::MatrixXd& Vn) const { return (Vn * scale).rowwise() + center; }
 };
 
 /// Centre on the vertex mean and scale so the mean edge length becomes 1.
-inline Normalization normalization_for(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
-                                       double mean_length = -1) {
+inline Normalization normalization_for(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, double mean_length = -1) {
   Normalization n;
   if (V.rows() > 0) n.center = V.colwise().mean();
   n.scale = mean_length > 0 ? mean_length : mean_edge_length(V, F);

@@ -68,14 +68,15 @@ SparseMatrix build_edge_gradient(const Topology& topo) {
   // eq. 9–10: the corner line l = 3f+k of face f at corner k; the edge entering corner k
   // counter-clockwise runs F(f,k−1)→F(f,k), i.e. is opposite corner k+1; the edge leaving it
   // runs F(f,k)→F(f,k+1), opposite corner k+2.
-  return two_per_row(3 * topo.num_faces(), topo.num_edges(), [&](Eigen::Index l, int& c0, double& v0, int& c1, double& v1) {
-    const Eigen::Index f = l / 3;
-    const int k = static_cast<int>(l % 3);
-    c0 = topo.face_edges(f, (k + 1) % 3);
-    v0 = 1.0;
-    c1 = topo.face_edges(f, (k + 2) % 3);
-    v1 = -1.0;
-  });
+  return two_per_row(3 * topo.num_faces(), topo.num_edges(),
+                     [&](Eigen::Index l, int& c0, double& v0, int& c1, double& v1) {
+                       const Eigen::Index f = l / 3;
+                       const int k = static_cast<int>(l % 3);
+                       c0 = topo.face_edges(f, (k + 1) % 3);
+                       v0 = 1.0;
+                       c1 = topo.face_edges(f, (k + 2) % 3);
+                       v1 = -1.0;
+                     });
 }
 
 Operators build_operators(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Topology& topo) {
@@ -98,8 +99,7 @@ Eigen::VectorXd safe_inverse(const Eigen::VectorXd& w) {
 }  // namespace
 
 Eigen::MatrixXd divergence_faces(const Operators& ops, const Eigen::MatrixXd& p) {
-  return -(safe_inverse(ops.face_areas).asDiagonal() *
-           (ops.G.transpose() * (ops.edge_lengths.asDiagonal() * p)));
+  return -(safe_inverse(ops.face_areas).asDiagonal() * (ops.G.transpose() * (ops.edge_lengths.asDiagonal() * p)));
 }
 
 Eigen::MatrixXd laplacian_faces(const Operators& ops, const Eigen::MatrixXd& u) {
@@ -107,8 +107,7 @@ Eigen::MatrixXd laplacian_faces(const Operators& ops, const Eigen::MatrixXd& u) 
 }
 
 Eigen::MatrixXd divergence_edges(const Operators& ops, const Eigen::MatrixXd& q) {
-  return -(safe_inverse(ops.edge_lengths).asDiagonal() *
-           (ops.D.transpose() * (ops.line_lengths.asDiagonal() * q)));
+  return -(safe_inverse(ops.edge_lengths).asDiagonal() * (ops.D.transpose() * (ops.line_lengths.asDiagonal() * q)));
 }
 
 Eigen::MatrixXd laplacian_edges(const Operators& ops, const Eigen::MatrixXd& v) {

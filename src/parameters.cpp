@@ -58,9 +58,12 @@ std::string ParameterInfo::key() const {
 
 std::string ParameterInfo::describe_range() const {
   switch (type) {
-    case ParameterType::Boolean: return "0 or 1";
-    case ParameterType::Integer: return "a whole number " + range.describe();
-    case ParameterType::Real: break;
+    case ParameterType::Boolean:
+      return "0 or 1";
+    case ParameterType::Integer:
+      return "a whole number " + range.describe();
+    case ParameterType::Real:
+      break;
   }
   return range.describe();
 }
@@ -243,8 +246,10 @@ const ParameterTable<DenoiseOptions>& denoise_parameters() {
     append(t, normal_filter_parameters(), &O::normals, {"solver-tolerance"});
     append(t, vertex_update_parameters(), &O::vertices, {"vertex-iterations", "solver-tolerance"});
     // One vertex-iterations for both vertex updates (NMSTV/MSTV's and the bilateral one).
-    t.push_back({find_parameter(vertex_update_parameters(), "vertex-iterations")->info, [](const O& o) { return static_cast<double>(o.vertices.max_iterations); },
-                 [](O& o, double x) { o.vertices.max_iterations = o.bilateral.vertex_iterations = static_cast<int>(x); }});
+    t.push_back(
+        {find_parameter(vertex_update_parameters(), "vertex-iterations")->info,
+         [](const O& o) { return static_cast<double>(o.vertices.max_iterations); },
+         [](O& o, double x) { o.vertices.max_iterations = o.bilateral.vertex_iterations = static_cast<int>(x); }});
     append(t, bilateral_parameters(), &O::bilateral, {"vertex-iterations"});
     t.push_back(shared_solver_tolerance<O>());
     return t;
@@ -268,8 +273,8 @@ const ParameterTable<InpaintOptions>& inpaint_parameters() {
                    "CGAL density_control_factor of the fill (0: √2 without feature recovery, feature-density with it)",
                    kInpaint),
               &O::density),
-        field(real("feature-density", "", "", left_open(0, kMaxFillDensity), "density of the fill where features are recovered",
-                   kInpaint),
+        field(real("feature-density", "", "", left_open(0, kMaxFillDensity),
+                   "density of the fill where features are recovered", kInpaint),
               &O::feature_density),
         field(boolean("features", "recover the sharp features running into the holes (off: CGAL's fill-and-fair only)",
                       kInpaint),

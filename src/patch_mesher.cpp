@@ -7,8 +7,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <Eigen/Geometry>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -86,7 +86,7 @@ using CdtFaceBase = CGAL::Constrained_triangulation_face_base_2<CdtKernel, CdtFa
 using CdtTds = CGAL::Triangulation_data_structure_2<CdtVertexBase, CdtFaceBase>;
 // The patch boundary is a simple polygon: constraints never cross.
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<CdtKernel, CdtTds,
-                                                        CGAL::No_constraint_intersection_requiring_constructions_tag>;
+                                                       CGAL::No_constraint_intersection_requiring_constructions_tag>;
 
 /// Face info = number of constraints crossed from the outside (odd: inside the patch).
 void mark_nesting_levels(Cdt& cdt) {
@@ -176,8 +176,7 @@ void PatchMesher::add_patch(const std::vector<int>& loop, const Develop& to_plan
   std::vector<Cdt::Vertex_handle> handle(points.size());
   for (auto v : cdt.finite_vertex_handles()) handle[v->info()] = v;
   for (size_t i = 0; i < nb; ++i) cdt.insert_constraint(handle[i], handle[(i + 1) % nb]);
-  if (cdt.number_of_vertices() != points.size())
-    throw std::logic_error("shapes: a patch boundary intersects itself");
+  if (cdt.number_of_vertices() != points.size()) throw std::logic_error("shapes: a patch boundary intersects itself");
   mark_nesting_levels(cdt);
 
   std::vector<int> id(points.size());

@@ -6,8 +6,7 @@
 
 namespace msmesh {
 
-PreparedMesh::PreparedMesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::string& what)
-    : faces_(F) {
+PreparedMesh::PreparedMesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::string& what) : faces_(F) {
   validate_mesh(V, F, what);
   topology_ = build_topology(F, V.rows());
   if (F.rows() == 0) {

@@ -15,11 +15,11 @@ namespace msmesh {
 namespace {
 
 // The "auto" rule's thresholds (docs/presets.md, measured on the 17 public noisy meshes).
-constexpr double kCreaseAngleDeg = 30.0;    // a pre-smoothed dihedral above this is a crease
-constexpr double kFlatAngleDeg = 1.0;       // ... below this, flat
-constexpr double kCadCreaseFraction = 0.03; // cad when creases make at least this much edge length
-constexpr double kCadFlatFraction = 0.5;    // ... or flat edges at least this much
-constexpr int kPreSmoothingPasses = 15;     // bilateral passes before measuring
+constexpr double kCreaseAngleDeg = 30.0;     // a pre-smoothed dihedral above this is a crease
+constexpr double kFlatAngleDeg = 1.0;        // ... below this, flat
+constexpr double kCadCreaseFraction = 0.03;  // cad when creases make at least this much edge length
+constexpr double kCadFlatFraction = 0.5;     // ... or flat edges at least this much
+constexpr int kPreSmoothingPasses = 15;      // bilateral passes before measuring
 
 std::string fixed(double x, int digits) {
   std::ostringstream os;
@@ -42,16 +42,15 @@ DenoiseOptions preset_options(const std::string& name) {
   if (name == "cad") return o;
   if (name == "smooth") {
     o.normals.alpha = 2.0;
-    o.normals.beta = 2.0;      // v ≈ 1 everywhere: the edge field only hurts organic shapes
+    o.normals.beta = 2.0;  // v ≈ 1 everywhere: the edge field only hurts organic shapes
     o.normals.gamma = 2.0;
     o.normals.rho = 0.9;
-    o.normals.penalty = 0.1;   // slow ADMM = 30 iterations stop well short of the TV staircase
+    o.normals.penalty = 0.1;  // slow ADMM = 30 iterations stop well short of the TV staircase
     o.vertices.omega2 = 0.3;
     o.vertices.omega3 = 0.3;
     return o;
   }
-  if (name == "auto")
-    throw InvalidInput("preset 'auto' is chosen from the mesh: use resolve_preset(\"auto\", V, F)");
+  if (name == "auto") throw InvalidInput("preset 'auto' is chosen from the mesh: use resolve_preset(\"auto\", V, F)");
   throw InvalidInput("unknown preset '" + name + "'; valid: auto, cad, smooth");
 }
 
@@ -82,8 +81,8 @@ PresetChoice choose_preset(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   const bool creases = c.sharp_fraction >= kCadCreaseFraction, flats = c.flat_fraction >= kCadFlatFraction;
   c.preset = (creases || flats) ? "cad" : "smooth";
   c.reason = "crease fraction " + fixed(c.sharp_fraction, 3) + (creases ? " >= " : " < ") +
-             fixed(kCadCreaseFraction, 2) + ", flat fraction " + fixed(c.flat_fraction, 2) +
-             (flats ? " >= " : " < ") + fixed(kCadFlatFraction, 2) + (c.preset == "cad" ? ": cad" : ": smooth");
+             fixed(kCadCreaseFraction, 2) + ", flat fraction " + fixed(c.flat_fraction, 2) + (flats ? " >= " : " < ") +
+             fixed(kCadFlatFraction, 2) + (c.preset == "cad" ? ": cad" : ": smooth");
   return c;
 }
 

@@ -75,7 +75,8 @@ PunchResult punch_holes(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, int 
                         std::uint64_t seed, bool on_features) {
   validate_mesh(V, F, "punch holes");
   if (count < 0) throw InvalidInput("punch holes: count = " + std::to_string(count) + " must be >= 0");
-  if (!(std::isfinite(radius) && radius > 0)) throw InvalidInput("punch holes: radius = " + num(radius) + " must be > 0");
+  if (!(std::isfinite(radius) && radius > 0))
+    throw InvalidInput("punch holes: radius = " + num(radius) + " must be > 0");
   const Eigen::Index nv = V.rows(), nf = F.rows();
   const Topology topo = build_topology(F, nv);
   const Adjacency adj = vertex_adjacency(V, topo);

@@ -80,7 +80,8 @@ class Random {
 
   /// Uniform integer in [0, n), n > 0, without modulo bias (rejection sampling).
   std::uint64_t below(std::uint64_t n) {
-    const std::uint64_t limit = std::numeric_limits<std::uint64_t>::max() - std::numeric_limits<std::uint64_t>::max() % n;
+    const std::uint64_t limit =
+        std::numeric_limits<std::uint64_t>::max() - std::numeric_limits<std::uint64_t>::max() % n;
     std::uint64_t r;
     do r = next();
     while (r >= limit);

@@ -2,6 +2,7 @@
 // and face order are kept and every change is counted.
 #include "msmesh/repair.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -13,12 +14,10 @@
 #include <sstream>
 #include <unordered_map>
 
-#include <Eigen/Geometry>
-
+#include "check.h"
 #include "msmesh/errors.h"
 #include "msmesh/parameters.h"
 #include "msmesh/topology.h"
-#include "check.h"
 
 namespace msmesh {
 
@@ -26,11 +25,21 @@ const ParameterTable<RepairOptions>& repair_parameters() {
   using O = RepairOptions;
   using T = ParameterType;
   static const ParameterTable<O> t = {
-      bind_parameter(ParameterInfo{"weld", "", "mean edge lengths", T::Real, {0, 1},
-                                   "merge vertices closer than this (0: exact duplicates only)", "repair"},
+      bind_parameter(ParameterInfo{"weld",
+                                   "",
+                                   "mean edge lengths",
+                                   T::Real,
+                                   {0, 1},
+                                   "merge vertices closer than this (0: exact duplicates only)",
+                                   "repair"},
                      &O::weld_tolerance),
-      bind_parameter(ParameterInfo{"zero-area-tolerance", "", "squared mean edge lengths", T::Real, {0, 1},
-                                   "faces of at most this area are degenerate", "repair"},
+      bind_parameter(ParameterInfo{"zero-area-tolerance",
+                                   "",
+                                   "squared mean edge lengths",
+                                   T::Real,
+                                   {0, 1},
+                                   "faces of at most this area are degenerate",
+                                   "repair"},
                      &O::zero_area_tolerance),
   };
   return t;
@@ -177,7 +186,8 @@ std::vector<int> weld(const Eigen::MatrixXd& V, const std::vector<bool>& referen
 }
 
 /// Edge -> the faces on it, with +1 when the face walks it from min to max.
-std::unordered_map<Edge, std::vector<std::pair<int, int>>, EdgeHash> edge_faces(const std::vector<std::array<int, 3>>& F) {
+std::unordered_map<Edge, std::vector<std::pair<int, int>>, EdgeHash> edge_faces(
+    const std::vector<std::array<int, 3>>& F) {
   std::unordered_map<Edge, std::vector<std::pair<int, int>>, EdgeHash> m;
   m.reserve(F.size() * 2);
   for (int f = 0; f < static_cast<int>(F.size()); ++f)
@@ -397,8 +407,7 @@ void store_result(Mesh& mesh, const std::vector<int>& source_vertex, bool remove
     take_rows(mesh.vertex_normals, rows);
   }
   mesh.F.resize(static_cast<Eigen::Index>(F.size()), 3);
-  for (std::size_t f = 0; f < F.size(); ++f)
-    mesh.F.row(static_cast<Eigen::Index>(f)) << F[f][0], F[f][1], F[f][2];
+  for (std::size_t f = 0; f < F.size(); ++f) mesh.F.row(static_cast<Eigen::Index>(f)) << F[f][0], F[f][1], F[f][2];
 
   r.vertex_map.resize(nv0);
   for (int i = 0; i < nv0; ++i) r.vertex_map(i) = new_index[i];

@@ -7,14 +7,14 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "check.h"
 #include "msmesh/denoise.h"
 #include "msmesh/errors.h"
-#include "msmesh/parameters.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
+#include "msmesh/parameters.h"
 #include "msmesh/prepared_mesh.h"
 #include "msmesh/topology.h"
-#include "check.h"
 
 namespace msmesh {
 

@@ -9,7 +9,6 @@
 #include "msmesh/shapes.h"
 
 #include <Eigen/Geometry>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -209,12 +208,12 @@ Mesh make_sphere(int subdivisions) {
           int_message("make_sphere", "subdivisions", "in [0, 10]", subdivisions));
   const double t = (1 + std::sqrt(5.0)) / 2;
   MeshBuilder b;
-  const double ico[12][3] = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                             {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  const double ico[12][3] = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                             {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
   for (const auto& p : ico) b.add_vertex(Vec3(p[0], p[1], p[2]).normalized());
-  const int faces[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                            {11, 10, 2}, {10, 7, 6}, {7, 1, 8},   {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                            {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  const int faces[20][3] = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                            {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                            {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
   for (const auto& f : faces) b.add_triangle(f[0], f[1], f[2]);
   for (int s = 0; s < subdivisions; ++s) {
     std::map<std::pair<int, int>, int> midpoint;
@@ -337,14 +336,16 @@ Mesh make_cube_with_holes(int n, int holes) {
   const TopologySummary s = summarize_topology(out.F, build_topology(out.F, out.V.rows()));
   if (static_cast<int>(s.boundary_loops.size()) != holes) {
     std::ostringstream os;
-    os << "make_cube_with_holes: " << holes << " holes merge into " << s.boundary_loops.size()
-       << " at n = " << n << "; use a larger n";
+    os << "make_cube_with_holes: " << holes << " holes merge into " << s.boundary_loops.size() << " at n = " << n
+       << "; use a larger n";
     throw InvalidInput(os.str());
   }
   return out;
 }
 
-std::vector<std::string> shape_names() { return {"cube", "cylinder", "sphere", "torus", "fandisk", "pyramid", "holes"}; }
+std::vector<std::string> shape_names() {
+  return {"cube", "cylinder", "sphere", "torus", "fandisk", "pyramid", "holes"};
+}
 
 namespace {
 [[noreturn]] void unknown_shape(const std::string& name) {

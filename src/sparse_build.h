@@ -35,58 +35,61 @@ Eigen::SparseMatrix<double> symmetric_from_rows(Eigen::Index n, Capacity&& capac
   std::vector<double> val(static_cast<size_t>(cap.back()));
   std::vector<int> count(static_cast<size_t>(n));
   const Eigen::Index row_weight = std::max<Eigen::Index>(1, cap.back() / std::max<Eigen::Index>(1, 4 * n));
-  parallel_for(n, [&](Eigen::Index i) {
-    const size_t b = static_cast<size_t>(cap[static_cast<size_t>(i)]);
-    size_t m = static_cast<size_t>(row(i, col.data() + b, val.data() + b));
-    if (m <= 16) {  // short rows: sort, then sum the repeats
-      insertion_sort(col.data() + b, val.data() + b, m);
-      size_t last = b;
-      for (size_t a = b + 1; a < b + m; ++a) {
-        if (col[a] == col[last]) {
-          val[last] += val[a];
+  parallel_for(
+      n,
+      [&](Eigen::Index i) {
+        const size_t b = static_cast<size_t>(cap[static_cast<size_t>(i)]);
+        size_t m = static_cast<size_t>(row(i, col.data() + b, val.data() + b));
+        if (m <= 16) {  // short rows: sort, then sum the repeats
+          insertion_sort(col.data() + b, val.data() + b, m);
+          size_t last = b;
+          for (size_t a = b + 1; a < b + m; ++a) {
+            if (col[a] == col[last]) {
+              val[last] += val[a];
+            } else {
+              ++last;
+              col[last] = col[a];
+              val[last] = val[a];
+            }
+          }
+          m = m == 0 ? 0 : last - b + 1;
         } else {
-          ++last;
-          col[last] = col[a];
-          val[last] = val[a];
+          // Long rows (the vertex update: ~70 entries, ~20 distinct columns): sum the repeats
+          // through a column → slot map in the order the row wrote them (deterministic), then
+          // sort the few distinct columns. A sort of all the pairs took 80 % of the assembly.
+          thread_local std::vector<int> slot;
+          if (slot.size() < static_cast<size_t>(n)) slot.assign(static_cast<size_t>(n), -1);
+          size_t u = 0;
+          for (size_t a = 0; a < m; ++a) {
+            const int c = col[b + a];
+            int& s = slot[static_cast<size_t>(c)];
+            if (s < 0) {
+              s = static_cast<int>(u);
+              col[b + u] = c;
+              val[b + u] = val[b + a];
+              ++u;
+            } else {
+              val[b + static_cast<size_t>(s)] += val[b + a];
+            }
+          }
+          for (size_t a = 0; a < u; ++a) slot[static_cast<size_t>(col[b + a])] = -1;
+          if (u <= 32) {
+            insertion_sort(col.data() + b, val.data() + b, u);
+          } else {  // a high-valence vertex: O(u log u) (the columns are distinct, so any sort gives the same)
+            thread_local std::vector<std::pair<int, double>> pairs;
+            pairs.resize(u);
+            for (size_t a = 0; a < u; ++a) pairs[a] = {col[b + a], val[b + a]};
+            std::sort(pairs.begin(), pairs.end());
+            for (size_t a = 0; a < u; ++a) {
+              col[b + a] = pairs[a].first;
+              val[b + a] = pairs[a].second;
+            }
+          }
+          m = u;
         }
-      }
-      m = m == 0 ? 0 : last - b + 1;
-    } else {
-      // Long rows (the vertex update: ~70 entries, ~20 distinct columns): sum the repeats
-      // through a column → slot map in the order the row wrote them (deterministic), then
-      // sort the few distinct columns. A sort of all the pairs took 80 % of the assembly.
-      thread_local std::vector<int> slot;
-      if (slot.size() < static_cast<size_t>(n)) slot.assign(static_cast<size_t>(n), -1);
-      size_t u = 0;
-      for (size_t a = 0; a < m; ++a) {
-        const int c = col[b + a];
-        int& s = slot[static_cast<size_t>(c)];
-        if (s < 0) {
-          s = static_cast<int>(u);
-          col[b + u] = c;
-          val[b + u] = val[b + a];
-          ++u;
-        } else {
-          val[b + static_cast<size_t>(s)] += val[b + a];
-        }
-      }
-      for (size_t a = 0; a < u; ++a) slot[static_cast<size_t>(col[b + a])] = -1;
-      if (u <= 32) {
-        insertion_sort(col.data() + b, val.data() + b, u);
-      } else {  // a high-valence vertex: O(u log u) (the columns are distinct, so any sort gives the same)
-        thread_local std::vector<std::pair<int, double>> pairs;
-        pairs.resize(u);
-        for (size_t a = 0; a < u; ++a) pairs[a] = {col[b + a], val[b + a]};
-        std::sort(pairs.begin(), pairs.end());
-        for (size_t a = 0; a < u; ++a) {
-          col[b + a] = pairs[a].first;
-          val[b + a] = pairs[a].second;
-        }
-      }
-      m = u;
-    }
-    count[static_cast<size_t>(i)] = static_cast<int>(m);
-  }, row_weight);
+        count[static_cast<size_t>(i)] = static_cast<int>(m);
+      },
+      row_weight);
   Eigen::SparseMatrix<double> A(n, n);
   Eigen::Index nnz = 0;
   for (Eigen::Index i = 0; i < n; ++i) nnz += count[static_cast<size_t>(i)];

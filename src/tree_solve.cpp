@@ -1,7 +1,8 @@
 #include "tree_solve.h"
 
-#include <algorithm>
 #include <cholmod.h>
+
+#include <algorithm>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -26,7 +27,6 @@ int tree_threads() {
   return 1;
 #endif
 }
-
 
 TreeSplit split_elimination_tree(const std::vector<int>& parent, const std::vector<double>& cost_in, double min_total) {
   const size_t n = parent.size();
@@ -178,7 +178,8 @@ void TreeSolve::forward(double* y) const {
     }
     for (size_t t = 0; t < top_.size(); ++t) {
       double* yt = y + 3 * static_cast<size_t>(top_[t]);
-      for (int c = 0; c < 3; ++c) yt[c] = (yt[c] - buffer_[0][3 * t + static_cast<size_t>(c)]) - buffer_[1][3 * t + static_cast<size_t>(c)];
+      for (int c = 0; c < 3; ++c)
+        yt[c] = (yt[c] - buffer_[0][3 * t + static_cast<size_t>(c)]) - buffer_[1][3 * t + static_cast<size_t>(c)];
     }
   }
   for (const int j : top_) column(j, n_, nullptr);  // the top's rows are all in the top
@@ -187,7 +188,8 @@ void TreeSolve::forward(double* y) const {
 void TreeSolve::backward(double* x) const {
   auto column = [&](int j) {
     const int p0 = Lp_[j], p1 = p0 + Lnz_[j];
-    double s0 = x[3 * static_cast<size_t>(j)], s1 = x[3 * static_cast<size_t>(j) + 1], s2 = x[3 * static_cast<size_t>(j) + 2];
+    double s0 = x[3 * static_cast<size_t>(j)], s1 = x[3 * static_cast<size_t>(j) + 1],
+           s2 = x[3 * static_cast<size_t>(j) + 2];
     for (int q = p0 + 1; q < p1; ++q) {
       const double* xi = x + 3 * static_cast<size_t>(Li_[q]);
       const double l = Lx_[q];

@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "msmesh/errors.h"
-#include "msmesh/parameters.h"
 #include "msmesh/geometry.h"
 #include "msmesh/operators.h"
+#include "msmesh/parameters.h"
 #include "msmesh/topology.h"
 #include "parallel.h"
 #include "pcg.h"
@@ -46,7 +46,8 @@ VertexCorners vertex_corners(const Eigen::MatrixXi& F, Eigen::Index nv) {
   for (size_t i = 0; i < static_cast<size_t>(nv); ++i) c.start[i + 1] += c.start[i];
   std::vector<int> fill(c.start.begin(), c.start.end() - 1);
   for (Eigen::Index f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) c.corners[static_cast<size_t>(fill[static_cast<size_t>(F(f, k))]++)] = static_cast<int>(3 * f + k);
+    for (int k = 0; k < 3; ++k)
+      c.corners[static_cast<size_t>(fill[static_cast<size_t>(F(f, k))]++)] = static_cast<int>(3 * f + k);
   return c;
 }
 
@@ -73,7 +74,8 @@ EdgeQuads edge_quads(const Eigen::MatrixXi& F, const Topology& topo, const Eigen
   q.roles.resize(4 * q.quad.size());
   std::vector<int> fill(q.role_start.begin(), q.role_start.end() - 1);
   for (size_t h = 0; h < q.quad.size(); ++h)
-    for (int r = 0; r < 4; ++r) q.roles[static_cast<size_t>(fill[static_cast<size_t>(q.quad[h][r])]++)] = static_cast<int>(4 * h + r);
+    for (int r = 0; r < 4; ++r)
+      q.roles[static_cast<size_t>(fill[static_cast<size_t>(q.quad[h][r])]++)] = static_cast<int>(4 * h + r);
   return q;
 }
 
@@ -152,21 +154,26 @@ Eigen::Index p_step(const Eigen::MatrixXi& F, const Rows& X, const Eigen::Matrix
 
 // V-step right-hand side (eq. 27): rhs = ω₁KᵀP + ω₃V⁰ (rhs0), row by row.
 void v_step_rhs(const Rows& rhs0, const Rows& P, const VertexCorners& vc, double omega1, Rows& rhs) {
-  detail::parallel_for(rhs0.rows(), [&](Eigen::Index i) {
-    Eigen::RowVector3d b = rhs0.row(i);
-    // ω₁KᵀP: each corner of the vertex adds its (centred) row of P.
-    for (int c = vc.start[static_cast<size_t>(i)]; c < vc.start[static_cast<size_t>(i) + 1]; ++c)
-      b += omega1 * P.row(vc.corners[static_cast<size_t>(c)]);
-    rhs.row(i) = b;
-  }, 2);  // about six corners per vertex
+  detail::parallel_for(
+      rhs0.rows(),
+      [&](Eigen::Index i) {
+        Eigen::RowVector3d b = rhs0.row(i);
+        // ω₁KᵀP: each corner of the vertex adds its (centred) row of P.
+        for (int c = vc.start[static_cast<size_t>(i)]; c < vc.start[static_cast<size_t>(i) + 1]; ++c)
+          b += omega1 * P.row(vc.corners[static_cast<size_t>(c)]);
+        rhs.row(i) = b;
+      },
+      2);  // about six corners per vertex
 }
 
 // The stopping test's RMS vertex move between X_prev and X.
 double rms_move(const Rows& X, const Rows& X_prev) {
   const Eigen::Index nv = X.rows();
-  return std::sqrt(detail::deterministic_sums<1>(nv, [&](Eigen::Index i0, Eigen::Index i1, std::array<double, 1>& s) {
-                     for (Eigen::Index i = i0; i < i1; ++i) s[0] += (X.row(i) - X_prev.row(i)).squaredNorm();
-                   })[0] /
+  return std::sqrt(detail::deterministic_sums<1>(nv,
+                                                 [&](Eigen::Index i0, Eigen::Index i1, std::array<double, 1>& s) {
+                                                   for (Eigen::Index i = i0; i < i1; ++i)
+                                                     s[0] += (X.row(i) - X_prev.row(i)).squaredNorm();
+                                                 })[0] /
                    double(nv));
 }
 
@@ -194,7 +201,8 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
   if (weights.vertex_omega3.size()) {
     if (weights.vertex_omega3.size() != nv) throw InvalidInput("vertex update: vertex_omega3 must have #V entries");
     w3 = weights.vertex_omega3;
-    if ((w3.array() < 0).any() || !w3.allFinite()) throw InvalidInput("vertex update: vertex_omega3 must be finite and >= 0");
+    if ((w3.array() < 0).any() || !w3.allFinite())
+      throw InvalidInput("vertex update: vertex_omega3 must be finite and >= 0");
   }
   VertexUpdateResult res;
   if (nf == 0) {
@@ -213,8 +221,8 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
   // per-vertex weights lower ω₃ somewhere (inpainting: new vertices are free), which makes
   // the system badly conditioned: then factor it at any size (docs/performance.md).
   constexpr Eigen::Index kCgMinVertices = 40000;
-  const bool use_cg = o.solver == LinearSolver::CG ||
-                      (o.solver == LinearSolver::Auto && nv >= kCgMinVertices && w3.minCoeff() >= 0.5);
+  const bool use_cg =
+      o.solver == LinearSolver::CG || (o.solver == LinearSolver::Auto && nv >= kCgMinVertices && w3.minCoeff() >= 0.5);
   const detail::ConstantSystem v_step(v_step_matrix(F, vc, eq, d3, o), use_cg, "vertex update");
   const Rows rhs0 = detail::to_rows(d3.asDiagonal() * V0);
 

@@ -24,21 +24,24 @@ inline std::vector<BadFile> bad_files() {
   const std::string tet_obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
   c.push_back({"nofaces.obj", tet_obj, "no faces"});
   c.push_back({"nofaces.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", "no faces"});
-  c.push_back({"nofaces.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                              "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n",
+  c.push_back({"nofaces.ply",
+               "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+               "property float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n",
                "no faces"});
   c.push_back({"novertices.off", "OFF\n0 0 0\n", "no vertices"});
   c.push_back({"nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "non-finite"});
   c.push_back({"inf.off", "OFF\n3 1 0\n0 0 0\n1 inf 0\n0 1 0\n3 0 1 2\n", "non-finite"});
-  c.push_back({"nan.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                          "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
-                          "0 0 0\n1 0 nan\n0 1 0\n3 0 1 2\n",
+  c.push_back({"nan.ply",
+               "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+               "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+               "0 0 0\n1 0 nan\n0 1 0\n3 0 1 2\n",
                "non-finite"});
   c.push_back({"oob.obj", tet_obj + "f 1 2 5\n", "refers to vertex 5"});
   c.push_back({"oob.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", "refers to vertex 3"});
-  c.push_back({"oob.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                          "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
-                          "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
+  c.push_back({"oob.ply",
+               "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+               "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+               "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
                "refers to vertex 7"});
   c.push_back({"huge.ply", binary_ply_header("element vertex 1000000000000\n") + std::string(60, '\0'),
                "header declares 1000000000000 vertex"});

@@ -5,11 +5,11 @@
 #include <array>
 #include <string>
 
-#include "msmesh/errors.h"
+#include "image_test_helpers.h"
 #include "msmesh/color_bar.h"
 #include "msmesh/color_map.h"
+#include "msmesh/errors.h"
 #include "msmesh/image.h"
-#include "image_test_helpers.h"
 
 using namespace msmesh;
 

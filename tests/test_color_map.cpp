@@ -5,8 +5,8 @@
 #include <array>
 #include <string>
 
-#include "msmesh/errors.h"
 #include "msmesh/color_map.h"
+#include "msmesh/errors.h"
 
 using namespace msmesh;
 

@@ -8,11 +8,11 @@
 #include <string>
 
 #include "msmesh/denoise.h"
-#include "msmesh/presets.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/metrics.h"
 #include "msmesh/noise.h"
+#include "msmesh/presets.h"
 #include "msmesh/repair.h"
 #include "msmesh/shapes.h"
 #include "msmesh/topology.h"

@@ -11,8 +11,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <random>
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -336,8 +336,8 @@ inline std::string shared_mesh(const std::string& rel) {
   return std::filesystem::exists(p) ? p : std::string();
 }
 
-#define MSMESH_REQUIRE_SHARED(var, rel)                                                     \
-  const std::string var = ::msmesh::test::shared_mesh(rel);                                \
+#define MSMESH_REQUIRE_SHARED(var, rel)                     \
+  const std::string var = ::msmesh::test::shared_mesh(rel); \
   if (var.empty()) GTEST_SKIP() << "public test mesh " << rel << " not found (../shared absent)"
 
 }  // namespace msmesh::test

@@ -5,9 +5,9 @@
 #include <array>
 #include <string>
 
+#include "image_test_helpers.h"
 #include "msmesh/errors.h"
 #include "msmesh/image.h"
-#include "image_test_helpers.h"
 
 using namespace msmesh;
 

@@ -18,9 +18,9 @@
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/inpaint.h"
+#include "msmesh/io.h"
 #include "msmesh/metrics.h"
 #include "msmesh/punch_holes.h"
-#include "msmesh/io.h"
 #include "msmesh/shapes.h"
 #include "msmesh/topology.h"
 #include "test_helpers.h"
@@ -42,8 +42,10 @@ PunchResult cube_with_edge_hole(const Mesh& cube, double radius) {
     int on_face_planes = 0;
     double other = 0;
     for (int k = 0; k < 3; ++k) {
-      if (std::abs(std::abs(c(k)) - 1) < 1e-12) ++on_face_planes;
-      else other = c(k);
+      if (std::abs(std::abs(c(k)) - 1) < 1e-12)
+        ++on_face_planes;
+      else
+        other = c(k);
     }
     if (on_face_planes == 2 && std::abs(other) < 0.5) return p;
   }

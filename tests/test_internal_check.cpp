@@ -23,11 +23,17 @@ TEST(InternalCheck, MessagesNameParameterValueAndRange) {
             "stage: alpha = -1 is out of range; valid: > 0");
   EXPECT_EQ(message([] { detail::check_non_negative("stage", "sigma", -2); }),
             "stage: sigma = -2 is out of range; valid: >= 0");
-  EXPECT_EQ(message([] { detail::check_range("stage", "k", 0, {1, 100}); }),
+  EXPECT_EQ(message([] {
+              detail::check_range("stage", "k", 0, {1, 100});
+            }),
             "stage: k = 0 is out of range; valid: in [1, 100]");
-  EXPECT_EQ(message([] { detail::check_range("stage", "t", 1, {0, 1, false, true}); }),
+  EXPECT_EQ(message([] {
+              detail::check_range("stage", "t", 1, {0, 1, false, true});
+            }),
             "stage: t = 1 is out of range; valid: in [0, 1)");
-  EXPECT_EQ(message([] { detail::check_range("stage", "t", 0, {0, 1, true, false}); }),
+  EXPECT_EQ(message([] {
+              detail::check_range("stage", "t", 0, {0, 1, true, false});
+            }),
             "stage: t = 0 is out of range; valid: in (0, 1]");
   EXPECT_NE(message([] { detail::check_range("stage", "t", std::nan(""), {0, 1}); }), "");
   EXPECT_NE(message([] { detail::check_non_negative("stage", "t", std::numeric_limits<double>::infinity()); }), "");

@@ -46,6 +46,7 @@ TEST(SparseBuild, RowsWithRepeatsMatchADenseSum) {
       ASSERT_LT(A.innerIndexPtr()[q - 1], A.innerIndexPtr()[q]) << "column " << c;
   // A row with more than 32 distinct columns exists (the pair-sort path ran).
   Eigen::Index widest = 0;
-  for (Eigen::Index c = 0; c < n; ++c) widest = std::max<Eigen::Index>(widest, A.outerIndexPtr()[c + 1] - A.outerIndexPtr()[c]);
+  for (Eigen::Index c = 0; c < n; ++c)
+    widest = std::max<Eigen::Index>(widest, A.outerIndexPtr()[c + 1] - A.outerIndexPtr()[c]);
   EXPECT_GT(widest, 32);
 }

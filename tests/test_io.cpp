@@ -2,14 +2,13 @@
 // writing meshes and polylines, atomic files), which work together here. The concepts'
 // own tests: test_mesh_format.cpp, test_read_mesh.cpp, test_write_mesh.cpp,
 // test_write_polylines.cpp, test_atomic_file.cpp.
-#include "msmesh/io.h"
-
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
 #include "msmesh/errors.h"
+#include "msmesh/io.h"
 #include "test_helpers.h"
 
 using namespace msmesh;

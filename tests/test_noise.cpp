@@ -132,7 +132,8 @@ TEST(Noise, InvalidOptionsThrow) {
     EXPECT_THROW(options(s).validate(), InvalidInput) << s;
     EXPECT_THROW(add_noise(m.V, m.F, options(s)), InvalidInput) << s;
   }
-  for (double f : {-0.1, 1.5, nan}) EXPECT_THROW(add_noise(m.V, m.F, options(0.2, NoiseDirection::Normal, f)), InvalidInput);
+  for (double f : {-0.1, 1.5, nan})
+    EXPECT_THROW(add_noise(m.V, m.F, options(0.2, NoiseDirection::Normal, f)), InvalidInput);
   try {
     options(-2).validate();
     FAIL();

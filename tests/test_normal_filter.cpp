@@ -66,9 +66,9 @@ TEST(NormalFilter, MstvIsNmstvWithoutReweighting) {
 
 TEST(NormalFilter, RefusesBadOptionsWeightsAndInputNormals) {
   const Mesh m = test::grid(3);
-  for (auto set : {+[](NormalFilterOptions& o) { o.alpha = 0; }, +[](NormalFilterOptions& o) { o.epsilon = -1; },
-                   +[](NormalFilterOptions& o) { o.relaxation = 2; },
-                   +[](NormalFilterOptions& o) { o.max_iterations = 0; }}) {
+  for (auto set :
+       {+[](NormalFilterOptions& o) { o.alpha = 0; }, +[](NormalFilterOptions& o) { o.epsilon = -1; },
+        +[](NormalFilterOptions& o) { o.relaxation = 2; }, +[](NormalFilterOptions& o) { o.max_iterations = 0; }}) {
     NormalFilterOptions o;
     set(o);
     EXPECT_THROW(o.validate(), InvalidInput);

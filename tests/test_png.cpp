@@ -77,11 +77,9 @@ for y in range(h):
     out += line; prev = line
 open(sys.argv[2], 'wb').write(out)
 )PY";
-  {
-    std::ofstream(dir / "decode.py") << script;
-  }
-  const test::CliRun r = test::run_command("python3 '" + (dir / "decode.py").string() + "' '" + (dir / "a.png").string() + "' '" +
-                       (dir / "a.rgb").string() + "'");
+  { std::ofstream(dir / "decode.py") << script; }
+  const test::CliRun r = test::run_command("python3 '" + (dir / "decode.py").string() + "' '" +
+                                           (dir / "a.png").string() + "' '" + (dir / "a.rgb").string() + "'");
   ASSERT_EQ(r.status, 0) << r.out;
   const std::string rgb = test::read_bytes(dir / "a.rgb");
   ASSERT_EQ(rgb.size(), im.rgb.size());

@@ -5,14 +5,13 @@
 // lists of every integer type in ascii and both binary byte orders; ascii PLY values checked
 // against their type; negative binary indices reported as they are. Each file is built here.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <Eigen/Geometry>
-
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <unistd.h>
 #include <string>
 #include <vector>
 
@@ -56,8 +55,9 @@ void expect_same_mesh(const Mesh& a, const Mesh& b, const std::string& what) {
   EXPECT_TRUE(a.uv.rows() == b.uv.rows() && a.uv == b.uv) << what;
 }
 
-const std::string kObj = "# a square and a triangle\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nvt 0 0\nvt 1 0\n"
-                         "vt 1 1\nvt 0 1\nvt 0.5 0.5\nf 1/1 2/2 3/3 4/4\nf 2/2 5/5 3/3\n";
+const std::string kObj =
+    "# a square and a triangle\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nvt 0 0\nvt 1 0\n"
+    "vt 1 1\nvt 0 1\nvt 0.5 0.5\nf 1/1 2/2 3/3 4/4\nf 2/2 5/5 3/3\n";
 
 std::string replace_spaces(const std::string& s, const std::string& by) {
   std::string out;
@@ -114,7 +114,8 @@ std::vector<std::pair<std::string, std::string>> polygon_files(const Polygon2& p
   std::string ply_header = "element vertex " + std::to_string(n) +
                            "\nproperty double x\nproperty double y\nproperty double z\nelement face 1\n"
                            "property list uchar int vertex_indices\nend_header\n";
-  std::string ply_ascii = "ply\nformat ascii 1.0\n" + ply_header, ply_le = "ply\nformat binary_little_endian 1.0\n" + ply_header;
+  std::string ply_ascii = "ply\nformat ascii 1.0\n" + ply_header,
+              ply_le = "ply\nformat binary_little_endian 1.0\n" + ply_header;
   char buf[128];
   for (const auto& c : poly.corners) {
     const Eigen::RowVector3d x = place(c);
@@ -143,7 +144,8 @@ std::vector<std::pair<std::string, std::string>> polygon_files(const Polygon2& p
 /// `v` as `bytes` bytes in the given byte order.
 std::string binary_int(long long v, int bytes, bool big) {
   std::string s(static_cast<std::size_t>(bytes), '\0');
-  for (int b = 0; b < bytes; ++b) s[static_cast<std::size_t>(big ? bytes - 1 - b : b)] = static_cast<char>((v >> (8 * b)) & 0xff);
+  for (int b = 0; b < bytes; ++b)
+    s[static_cast<std::size_t>(big ? bytes - 1 - b : b)] = static_cast<char>((v >> (8 * b)) & 0xff);
   return s;
 }
 std::string binary_float(float x, bool big) {
@@ -158,12 +160,15 @@ int type_bytes(const std::string& t) { return t == "char" || t == "uchar" ? 1 : 
 std::string ply_square(const std::string& format, const std::string& count_type, const std::string& index_type,
                        std::vector<std::vector<long long>> faces = {{0, 1, 4}, {1, 2, 3, 4}}) {
   const double V[5][3] = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {0, 1, 0}};
-  std::string s = "ply\nformat " + format + " 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
-                  "element face " + std::to_string(faces.size()) + "\nproperty list " + count_type + " " + index_type +
+  std::string s = "ply\nformat " + format +
+                  " 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+                  "element face " +
+                  std::to_string(faces.size()) + "\nproperty list " + count_type + " " + index_type +
                   " vertex_indices\nend_header\n";
   const bool ascii = format == "ascii", big = format == "binary_big_endian";
   for (const auto& v : V)
-    for (int d = 0; d < 3; ++d) s += ascii ? std::to_string(static_cast<int>(v[d])) + (d == 2 ? "\n" : " ") : binary_float(float(v[d]), big);
+    for (int d = 0; d < 3; ++d)
+      s += ascii ? std::to_string(static_cast<int>(v[d])) + (d == 2 ? "\n" : " ") : binary_float(float(v[d]), big);
   for (const auto& f : faces) {
     s += ascii ? std::to_string(f.size()) : binary_int(static_cast<long long>(f.size()), type_bytes(count_type), big);
     for (long long i : f) s += ascii ? " " + std::to_string(i) : binary_int(i, type_bytes(index_type), big);
@@ -186,8 +191,8 @@ TEST(ReadExact, ObjAnyWhitespaceSeparatesLikeASpace) {
   }
   // Leading and trailing whitespace on every line, CRLF line ends.
   std::string padded;
-  for (const auto& line : {"v 0 0 0", "v 1 0 0", "v 1 1 0", "v 0 1 0", "v 2 0 0", "vt 0 0", "vt 1 0", "vt 1 1", "vt 0 1",
-                           "vt 0.5 0.5", "f 1/1 2/2 3/3 4/4", "f 2/2 5/5 3/3"})
+  for (const auto& line : {"v 0 0 0", "v 1 0 0", "v 1 1 0", "v 0 1 0", "v 2 0 0", "vt 0 0", "vt 1 0", "vt 1 1",
+                           "vt 0 1", "vt 0.5 0.5", "f 1/1 2/2 3/3 4/4", "f 2/2 5/5 3/3"})
     padded += std::string("\t ") + line + " \t\r\n";
   expect_same_mesh(read_text(dir, "pad.obj", "# a comment\r\n" + padded), ref, "padded lines");
   // A comment after the corners ends the face.
@@ -201,8 +206,9 @@ TEST(ReadExact, ByteOrderMarkIsSkippedInEveryTextFormat) {
       {"m.obj", kObj},
       {"m.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n"},
       {"m.ply", ply_square("ascii", "uchar", "int")},
-      {"m.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
-                "endsolid t\n"},
+      {"m.stl",
+       "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
+       "endsolid t\n"},
   };
   for (const auto& [name, bytes] : files) {
     const Mesh plain = read_text(dir, name, bytes);
@@ -222,7 +228,8 @@ TEST(ReadExact, ObjBadIndexWordsAreRefusedNamingLineAndWord) {
     EXPECT_NE(what.find("'" + bad + "'"), std::string::npos) << bad << ": " << what;
   }
   // Out of range: beyond the vertices (named with the line), before the first one.
-  EXPECT_NE(read_error(dir, "far.obj", head + "f 1 2 3\nf 1 2 4\n").find("line 6: face refers to vertex 4"), std::string::npos);
+  EXPECT_NE(read_error(dir, "far.obj", head + "f 1 2 3\nf 1 2 4\n").find("line 6: face refers to vertex 4"),
+            std::string::npos);
   EXPECT_NE(read_error(dir, "back.obj", head + "f -1 -2 -4\n").find("line 5"), std::string::npos);
   // A bad vertex coordinate, texture coordinate or normal is refused too.
   EXPECT_NE(read_error(dir, "coord.obj", "v 0 0 0\nv 1 0x 0\nv 0 1 0\nf 1 2 3\n").find("line 2"), std::string::npos);
@@ -275,8 +282,9 @@ TEST(ReadExact, NonConvexPolygonsKeepTheirAreaAndOrientationInEveryFormat) {
 
 TEST(ReadExact, ConvexPolygonsGiveTheFanFromTheFirstCorner) {
   TempDir dir;
-  const Mesh m = read_text(dir, "convex.obj", "v 0 0 0\nv 2 0 0\nv 3 1 0\nv 2 2 0\nv 0 2 0\nv -1 1 0\nf 1 2 3 4 5 6\n"
-                                              "v 5 0 0\nv 6 0 0\nv 6 1 0\nv 5 1 0\nv 5 0.5 0\nf 7 8 9 10 11\n");
+  const Mesh m = read_text(dir, "convex.obj",
+                           "v 0 0 0\nv 2 0 0\nv 3 1 0\nv 2 2 0\nv 0 2 0\nv -1 1 0\nf 1 2 3 4 5 6\n"
+                           "v 5 0 0\nv 6 0 0\nv 6 1 0\nv 5 1 0\nv 5 0.5 0\nf 7 8 9 10 11\n");
   ASSERT_EQ(m.F.rows(), 7);
   const int expected[7][3] = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}, {6, 7, 8}, {6, 8, 9}, {6, 9, 10}};
   for (int f = 0; f < 7; ++f) EXPECT_EQ(m.F.row(f), Eigen::RowVector3i(expected[f][0], expected[f][1], expected[f][2]));
@@ -308,26 +316,30 @@ TEST(ReadExact, PlyFloatAndDoubleCoordinatesReadAlike) {
 
 TEST(ReadExact, PlyAsciiValuesMustFitTheirType) {
   TempDir dir;
-  const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                           "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 1\n"
-                           "property list uchar int vertex_indices\nend_header\n";
+  const std::string head =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "property uchar red\nproperty uchar green\nproperty uchar blue\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n";
   const std::string faces = "3 0 1 2\n";
   const Mesh ok = read_text(dir, "ok.ply", head + "0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 0\n" + faces);
   ASSERT_EQ(ok.vertex_colors.rows(), 3);
   EXPECT_EQ(ok.vertex_colors(0, 0), 1.0);
   // A colour of 300 is refused (never wrapped to 44), as are negative, fractional ones.
   for (const std::string bad : {"300", "256", "-1", "2.5", "1e2"}) {
-    const std::string what = read_error(dir, "c.ply", head + "0 0 0 255 0 0\n1 0 0 0 " + bad + " 0\n0 1 0 0 0 0\n" + faces);
+    const std::string what =
+        read_error(dir, "c.ply", head + "0 0 0 255 0 0\n1 0 0 0 " + bad + " 0\n0 1 0 0 0 0\n" + faces);
     EXPECT_NE(what.find("vertex 1 (line 14)"), std::string::npos) << what;
     EXPECT_NE(what.find("'green' value '" + bad + "'"), std::string::npos) << what;
     EXPECT_NE(what.find("0..255"), std::string::npos) << what;
   }
   // Indices and counts too: a fractional index, an index beyond int, a negative count.
-  EXPECT_NE(read_error(dir, "i.ply", ply_square("ascii", "uchar", "int", {{0, 1, 4}}).replace(
-                                         ply_square("ascii", "uchar", "int", {{0, 1, 4}}).rfind("4\n"), 1, "2.9"))
+  EXPECT_NE(read_error(dir, "i.ply",
+                       ply_square("ascii", "uchar", "int", {{0, 1, 4}})
+                           .replace(ply_square("ascii", "uchar", "int", {{0, 1, 4}}).rfind("4\n"), 1, "2.9"))
                 .find("'2.9'"),
             std::string::npos);
-  EXPECT_NE(read_error(dir, "u.ply", ply_square("ascii", "uchar", "uchar", {{0, 1, 300}})).find("'300'"), std::string::npos);
+  EXPECT_NE(read_error(dir, "u.ply", ply_square("ascii", "uchar", "uchar", {{0, 1, 300}})).find("'300'"),
+            std::string::npos);
 }
 
 TEST(ReadExact, PlyNegativeBinaryIndexIsReportedAsItIs) {
@@ -339,7 +351,8 @@ TEST(ReadExact, PlyNegativeBinaryIndexIsReportedAsItIs) {
       EXPECT_EQ(what.find("18446744073709551609"), std::string::npos) << what;
     }
   // An unsigned index beyond the vertices is reported as it is too.
-  const std::string what = read_error(dir, "big.ply", ply_square("binary_little_endian", "uchar", "uint", {{0, 1, 4294967295}}));
+  const std::string what =
+      read_error(dir, "big.ply", ply_square("binary_little_endian", "uchar", "uint", {{0, 1, 4294967295}}));
   EXPECT_NE(what.find("refers to vertex 4294967295"), std::string::npos) << what;
 }
 

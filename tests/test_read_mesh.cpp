@@ -19,16 +19,16 @@
 #include <vector>
 
 #include "../fuzz/mesh_check.h"
+#include "bad_files.h"
 #include "msmesh/errors.h"
 #include "msmesh/read_mesh.h"
 #include "msmesh/write_mesh.h"
-#include "bad_files.h"
 #include "test_helpers.h"
 
 using namespace msmesh;
 using msmesh::test::read_bytes;
-using msmesh::test::write_bytes;
 using msmesh::test::TempDir;
+using msmesh::test::write_bytes;
 namespace fs = std::filesystem;
 
 namespace {
@@ -95,7 +95,8 @@ std::string bytes_of(const fs::path& p) {
 TEST(IoRead, QuadObjIsTriangulated) {
   TempDir dir;
   const std::string path = dir.file("quad.obj");
-  write_bytes(path, "# two quads\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2/1 5/2 6/3 3/4\n");
+  write_bytes(path,
+              "# two quads\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2/1 5/2 6/3 3/4\n");
   const Mesh m = read_mesh(path);
   EXPECT_EQ(m.V.rows(), 6);
   ASSERT_EQ(m.F.rows(), 4);
@@ -134,7 +135,8 @@ TEST(IoRead, StlTrianglesAreWelded) {
 TEST(IoRead, BinaryStlWhoseHeaderStartsWithSolid) {
   TempDir dir;
   const std::string path = dir.file("solid_header.stl");
-  write_bytes(path, binary_stl({{0, 0, 0, 1, 0, 0, 0, 1, 0}, {1, 0, 0, 1, 1, 0, 0, 1, 0}}, "solid exported by a CAD tool"));
+  write_bytes(path,
+              binary_stl({{0, 0, 0, 1, 0, 0, 0, 1, 0}, {1, 0, 0, 1, 1, 0, 0, 1, 0}}, "solid exported by a CAD tool"));
   const Mesh m = read_mesh(path);
   EXPECT_EQ(m.V.rows(), 4);
   EXPECT_EQ(m.F.rows(), 2);
@@ -232,7 +234,8 @@ TEST(IoErrors, WrongMagic) {
     expect_read_error(dir.file(name));
   }
   // A PLY header with a binary body of the wrong format keyword.
-  write_bytes(dir.file("fmt.ply"), "ply\nformat binary_middle_endian 1.0\nelement vertex 1\nproperty float x\nend_header\n");
+  write_bytes(dir.file("fmt.ply"),
+              "ply\nformat binary_middle_endian 1.0\nelement vertex 1\nproperty float x\nend_header\n");
   expect_read_error(dir.file("fmt.ply"), "unknown format");
 }
 
@@ -240,14 +243,16 @@ TEST(IoErrors, HugeHeaderCounts) {
   TempDir dir;
   const std::string vertex = "property float x\nproperty float y\nproperty float z\n";
   const std::string face = "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
-  write_bytes(dir.file("ascii.ply"), "ply\nformat ascii 1.0\nelement vertex 999999999999\n" + vertex + face + "0 0 0\n");
+  write_bytes(dir.file("ascii.ply"),
+              "ply\nformat ascii 1.0\nelement vertex 999999999999\n" + vertex + face + "0 0 0\n");
   expect_read_error(dir.file("ascii.ply"), "truncated");
-  write_bytes(dir.file("binary.ply"),
-              "ply\nformat binary_little_endian 1.0\nelement vertex 999999999999\n" + vertex + face + std::string(12, '\0'));
+  write_bytes(dir.file("binary.ply"), "ply\nformat binary_little_endian 1.0\nelement vertex 999999999999\n" + vertex +
+                                          face + std::string(12, '\0'));
   expect_read_error(dir.file("binary.ply"), "truncated");
-  write_bytes(dir.file("faces.ply"), "ply\nformat binary_little_endian 1.0\nelement vertex 3\n" + vertex +
-                                         "element face 4000000000\nproperty list uchar int vertex_indices\nend_header\n" +
-                                         std::string(36 + 13, '\0'));
+  write_bytes(dir.file("faces.ply"),
+              "ply\nformat binary_little_endian 1.0\nelement vertex 3\n" + vertex +
+                  "element face 4000000000\nproperty list uchar int vertex_indices\nend_header\n" +
+                  std::string(36 + 13, '\0'));
   expect_read_error(dir.file("faces.ply"), "truncated");
   // An element without properties would otherwise be looped over without reading anything.
   write_bytes(dir.file("empty_element.ply"),
@@ -268,8 +273,8 @@ TEST(IoErrors, HugeCountsInsideTheBody) {
   std::string coords;
   for (int i = 0; i < 9; ++i) coords += le_float(float(i % 2));
   // A 32-bit list count of 2^31 - 1: CGAL would allocate it before reading.
-  const std::string header =
-      "ply\nformat binary_little_endian 1.0\n" + vertex + "element face 1\nproperty list int int vertex_indices\nend_header\n";
+  const std::string header = "ply\nformat binary_little_endian 1.0\n" + vertex +
+                             "element face 1\nproperty list int int vertex_indices\nend_header\n";
   write_bytes(dir.file("list.ply"), header + coords + le32(0x7fffffff) + le32(0) + le32(1) + le32(2));
   expect_read_error(dir.file("list.ply"), "list count");
   const std::string ascii_header =
@@ -293,7 +298,8 @@ TEST(IoErrors, HugeCountsInsideTheBody) {
 
 TEST(IoErrors, PlyHeadersCgalWouldMisread) {
   TempDir dir;
-  const std::string face = "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const std::string face =
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   // Integer coordinates: CGAL dereferences a null pointer.
   write_bytes(dir.file("int.ply"),
               "ply\nformat ascii 1.0\nelement vertex 3\nproperty int x\nproperty int y\nproperty int z\n" + face);
@@ -302,13 +308,16 @@ TEST(IoErrors, PlyHeadersCgalWouldMisread) {
   write_bytes(dir.file("orphan.ply"), "ply\nformat ascii 1.0\nproperty float x\nelement vertex 3\n" + face);
   expect_read_error(dir.file("orphan.ply"), "before any element");
   // An unknown type: CGAL skips it silently and misreads the rest.
-  write_bytes(dir.file("int64.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                     "property float z\nproperty int64 id\n" + face);
+  write_bytes(dir.file("int64.ply"),
+              "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+              "property float z\nproperty int64 id\n" +
+                  face);
   expect_read_error(dir.file("int64.ply"), "int64");
   // No vertex indices in the face element.
-  write_bytes(dir.file("noidx.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                     "property float z\nelement face 1\nproperty list uchar float corners\nend_header\n"
-                                     "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  write_bytes(dir.file("noidx.ply"),
+              "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+              "property float z\nelement face 1\nproperty list uchar float corners\nend_header\n"
+              "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   expect_read_error(dir.file("noidx.ply"), "vertex_indices");
 }
 
@@ -338,8 +347,9 @@ TEST(IoErrors, NonFiniteCoordinates) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   write_bytes(dir.file("nan.stl"), binary_stl({{0, 0, 0, nan, 0, 0, 0, 1, 0}}));
   expect_read_error(dir.file("nan.stl"), "non-finite");
-  std::string ply = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
   for (float x : {0.f, 0.f, 0.f, nan, 0.f, 0.f, 0.f, 1.f, 0.f}) ply += le_float(x);
   ply += std::string(1, '\3') + le32(0) + le32(1) + le32(2);
   write_bytes(dir.file("nan.ply"), ply);
@@ -356,16 +366,18 @@ TEST(IoErrors, OutOfRangeFaceIndex) {
   expect_read_error(dir.file("zero.obj"), "1-based");
   write_bytes(dir.file("far.off"), "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
   expect_read_error(dir.file("far.off"), "out of range");
-  write_bytes(dir.file("far.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                   "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                                   "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
+  write_bytes(dir.file("far.ply"),
+              "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+              "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+              "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
   expect_read_error(dir.file("far.ply"), "out of range");
 }
 
 TEST(IoErrors, NoFacesOrNoVertices) {
   TempDir dir;
-  write_bytes(dir.file("points.ply"), "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
-                                      "property float z\nend_header\n0 0 0\n1 0 0\n");
+  write_bytes(dir.file("points.ply"),
+              "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+              "property float z\nend_header\n0 0 0\n1 0 0\n");
   expect_read_error(dir.file("points.ply"), "no faces");
   write_bytes(dir.file("points.obj"), "v 0 0 0\nv 1 0 0\n");
   expect_read_error(dir.file("points.obj"), "no faces");

@@ -15,12 +15,12 @@
 #include <sstream>
 #include <string>
 
+#include "image_test_helpers.h"
 #include "msmesh/errors.h"
 #include "msmesh/image.h"
 #include "msmesh/io.h"
 #include "msmesh/png.h"
 #include "msmesh/render.h"
-#include "image_test_helpers.h"
 #include "test_helpers.h"
 
 using namespace msmesh;

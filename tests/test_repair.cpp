@@ -14,10 +14,10 @@ using namespace msmesh;
 TEST(Repair, MergesDuplicateVerticesWithoutRenumbering) {
   Mesh m = test::tetrahedron();
   m.V.conservativeResize(6, 3);
-  m.V.row(4) = m.V.row(1);                                    // exact copy
-  m.V.row(5) = m.V.row(2) + Eigen::RowVector3d(1e-4, 0, 0);   // close copy
-  m.F(1, 2) = 4;                                              // face 1 uses the exact copy
-  m.F(3, 2) = 5;                                              // face 3 uses the close copy
+  m.V.row(4) = m.V.row(1);                                   // exact copy
+  m.V.row(5) = m.V.row(2) + Eigen::RowVector3d(1e-4, 0, 0);  // close copy
+  m.F(1, 2) = 4;                                             // face 1 uses the exact copy
+  m.F(3, 2) = 5;                                             // face 3 uses the close copy
   Mesh exact = m;
   RepairReport r = repair_mesh(exact);
   EXPECT_EQ(r.merged_vertices, 1);
@@ -45,10 +45,10 @@ TEST(Repair, RemovesDegenerateZeroAreaAndDuplicateFacesKeepingFaceOrder) {
   m.V.conservativeResize(m.V.rows() + 1, 3);
   m.V.row(m.V.rows() - 1) = 0.5 * (m.V.row(0) + m.V.row(1));  // on the edge 0-1
   m.F.conservativeResize(nf + 4, 3);
-  m.F.row(nf) << 0, 1, static_cast<int>(m.V.rows() - 1);    // zero area
-  m.F.row(nf + 1) = m.F.row(2);                              // duplicate
-  m.F.row(nf + 2) << 3, 3, 4;                                // repeats a vertex
-  m.F.row(nf + 3) << m.F(4, 2), m.F(4, 1), m.F(4, 0);        // reversed duplicate
+  m.F.row(nf) << 0, 1, static_cast<int>(m.V.rows() - 1);  // zero area
+  m.F.row(nf + 1) = m.F.row(2);                           // duplicate
+  m.F.row(nf + 2) << 3, 3, 4;                             // repeats a vertex
+  m.F.row(nf + 3) << m.F(4, 2), m.F(4, 1), m.F(4, 0);     // reversed duplicate
   RepairReport r = repair_mesh(m);
   EXPECT_EQ(r.zero_area_faces_removed, 1);
   EXPECT_EQ(r.duplicate_faces_removed, 2);

@@ -43,8 +43,8 @@ Eigen::MatrixXd noisy(const Mesh& m, double sigma, std::uint64_t seed) {
 }
 
 struct CutStats {
-  int cut = 0;          // interior edges between different labels
-  int on_crease = 0;    // of those, edges with a clean dihedral angle above 30°
+  int cut = 0;        // interior edges between different labels
+  int on_crease = 0;  // of those, edges with a clean dihedral angle above 30°
   double fraction() const { return cut ? double(on_crease) / cut : 1.0; }
 };
 
@@ -97,10 +97,11 @@ TEST_P(SegmentShapes, FindsThePatchesAndCutsOnCreases) {
   const SegmentResult r = segment(m.V, m.F);
   expect_valid(m, r);
   const CutStats s = cut_stats(clean, r.labels);
-  std::printf("[segment] %-8s sigma %.1f: %d faces, %d segments (multicut %d, expected %d), %d cut edges, "
-              "%.1f%% on creases\n",
-              shape.c_str(), sigma, static_cast<int>(m.F.rows()), r.count, r.multicut_count,
-              shape_patch_count(shape), s.cut, 100 * s.fraction());
+  std::printf(
+      "[segment] %-8s sigma %.1f: %d faces, %d segments (multicut %d, expected %d), %d cut edges, "
+      "%.1f%% on creases\n",
+      shape.c_str(), sigma, static_cast<int>(m.F.rows()), r.count, r.multicut_count, shape_patch_count(shape), s.cut,
+      100 * s.fraction());
   EXPECT_LE(r.count, shape_patch_count(shape));
   EXPECT_GE(r.count, shape_patch_count(shape) - allowed_missing(shape, sigma));
   EXPECT_GE(s.fraction(), 0.9);
@@ -252,8 +253,7 @@ TEST(Feature, CubeHasTwelveCreaseChains) {
     if (dihedral(e) > M_PI / 4) crease.insert({t.edges(e, 0), t.edges(e, 1)});
   for (const auto& l : lines) {
     EXPECT_EQ(l.size(), 9u);  // 8 edges along each cube edge at resolution 8
-    for (size_t k = 0; k + 1 < l.size(); ++k)
-      covered.insert({std::min(l[k], l[k + 1]), std::max(l[k], l[k + 1])});
+    for (size_t k = 0; k + 1 < l.size(); ++k) covered.insert({std::min(l[k], l[k + 1]), std::max(l[k], l[k + 1])});
   }
   EXPECT_EQ(covered, crease);
 }

@@ -2,8 +2,6 @@
 // manifold, outward-oriented mesh without degenerate or sliver faces, whose crease-separated
 // patches are exactly shape_patch_count(name); plus per-shape sizes and properties.
 #include <gtest/gtest.h>
-
-#include "test_helpers.h"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -21,6 +19,7 @@
 #include "msmesh/io.h"
 #include "msmesh/shapes.h"
 #include "msmesh/topology.h"
+#include "test_helpers.h"
 
 using namespace msmesh;
 

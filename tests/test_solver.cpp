@@ -1,6 +1,7 @@
 // The two solvers of the constant systems (Cholesky factorisation and warm-started
 // conjugate gradients) give the same filtered normals and vertices, and the parallel loops
-// give bit-identical results whatever the number of threads (set_threads; its checks: test_threads.cpp; msmesh --threads: cli/test_threads_cli.cpp).
+// give bit-identical results whatever the number of threads (set_threads; its checks: test_threads.cpp; msmesh
+// --threads: cli/test_threads_cli.cpp).
 #include <gtest/gtest.h>
 
 #ifdef _OPENMP
@@ -8,11 +9,11 @@
 #endif
 
 #include "msmesh/denoise.h"
-#include "msmesh/presets.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/io.h"
 #include "msmesh/noise.h"
+#include "msmesh/presets.h"
 #include "msmesh/shapes.h"
 #include "msmesh/threads.h"
 #include "test_helpers.h"

@@ -5,10 +5,10 @@
 #include <array>
 #include <string>
 
+#include "image_test_helpers.h"
 #include "msmesh/errors.h"
 #include "msmesh/image.h"
 #include "msmesh/text.h"
-#include "image_test_helpers.h"
 
 using namespace msmesh;
 

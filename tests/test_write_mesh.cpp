@@ -43,7 +43,8 @@ TEST(IoRoundTrip, EveryFormatKeepsVerticesAndFaces) {
     std::string name;
     bool binary;
   };
-  for (const Case& c : {Case{"m.obj", false}, Case{"m.off", false}, Case{"ascii.ply", false}, Case{"binary.ply", true}}) {
+  for (const Case& c :
+       {Case{"m.obj", false}, Case{"m.off", false}, Case{"ascii.ply", false}, Case{"binary.ply", true}}) {
     SCOPED_TRACE(c.name);
     const std::string path = dir.file(c.name);
     write_mesh(path, m, WriteOptions{c.binary});
@@ -121,7 +122,8 @@ TEST(IoWrite, NoTemporaryFilesAreLeftBehind) {
   // Overwriting an existing file goes through a temporary too.
   write_mesh(dir.file("a.obj"), test::tetrahedron());
   EXPECT_EQ(read_mesh(dir.file("a.obj")).F.rows(), 4);
-  const std::vector<std::string> expected = {"a.obj", "a.off", "a.ply", "a.stl", "colors.ply", "lines.obj", "notes.txt"};
+  const std::vector<std::string> expected = {"a.obj",      "a.off",     "a.ply",    "a.stl",
+                                             "colors.ply", "lines.obj", "notes.txt"};
   EXPECT_EQ(dir.listing(), expected);
 }
 
@@ -134,7 +136,8 @@ TEST(IoWrite, FaceColoursPly) {
     const std::string path = dir.file(binary ? "b.ply" : "a.ply");
     write_ply_face_colors(path, m, C, binary);
     const std::string bytes = read_bytes(path);
-    EXPECT_NE(bytes.find("element face 4\nproperty list uchar int vertex_indices\nproperty uchar red\n"), std::string::npos);
+    EXPECT_NE(bytes.find("element face 4\nproperty list uchar int vertex_indices\nproperty uchar red\n"),
+              std::string::npos);
     if (!binary) EXPECT_NE(bytes.find("3 1 3 2 128 128 128\n"), std::string::npos);
     const Mesh r = read_mesh(path);
     EXPECT_TRUE(r.F == m.F);

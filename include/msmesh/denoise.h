@@ -29,12 +29,12 @@ struct DenoiseOptions {
 };
 
 struct DenoiseResult {
-  Eigen::MatrixXd V;        ///< #V by 3 denoised positions (F unchanged)
-  Eigen::MatrixXd normals;  ///< #F by 3 filtered normals (the targets of the vertex update)
-  Eigen::VectorXd v;        ///< #E edge field, v[e] belongs to edges.row(e) (NMSTV/MSTV; empty for bilateral)
-  Eigen::MatrixXi edges;    ///< #E by 2 vertex indices of the edges of v (empty for bilateral)
-  NormalFilterStats normal_report;   ///< iterations and histories (NMSTV/MSTV)
-  VertexUpdateStats vertex_report;   ///< iterations and histories
+  Eigen::MatrixXd V;                ///< #V by 3 denoised positions (F unchanged)
+  Eigen::MatrixXd normals;          ///< #F by 3 filtered normals (the targets of the vertex update)
+  Eigen::VectorXd v;                ///< #E edge field, v[e] belongs to edges.row(e) (NMSTV/MSTV; empty for bilateral)
+  Eigen::MatrixXi edges;            ///< #E by 2 vertex indices of the edges of v (empty for bilateral)
+  NormalFilterStats normal_report;  ///< iterations and histories (NMSTV/MSTV)
+  VertexUpdateStats vertex_report;  ///< iterations and histories
   double seconds_normals = 0, seconds_vertices = 0;
 };
 

@@ -1,6 +1,7 @@
 // Per-element geometric quantities. Lengths and areas are in the mesh's own units.
 #pragma once
 #include <Eigen/Core>
+
 #include "msmesh/topology.h"
 
 namespace msmesh {

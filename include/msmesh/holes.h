@@ -12,13 +12,13 @@ struct Hole {
   /// which its face walks it (so the hole lies to the left seen from outside). For a boundary
   /// that touches itself the walk visits the touching vertices more than once.
   std::vector<int> loop;
-  int edges = 0;          ///< number of boundary edges
-  double diameter = 0;    ///< largest distance between two loop vertices, in mean edge lengths
-  double length = 0;      ///< sum of the boundary edge lengths, in mean edge lengths
+  int edges = 0;        ///< number of boundary edges
+  double diameter = 0;  ///< largest distance between two loop vertices, in mean edge lengths
+  double length = 0;    ///< sum of the boundary edge lengths, in mean edge lengths
   /// Area the loop spans, in squared mean edge lengths: the norm of its vector area
   /// ½ Σ p_k × p_{k+1} (exact for a planar loop, the projected area of a bent one).
   double spanned_area = 0;
-  int component = 0;      ///< connected component of faces it borders
+  int component = 0;  ///< connected component of faces it borders
   /// The outer boundary of an open surface (see find_holes): never filled unless asked.
   bool outer_boundary = false;
   /// False when the boundary touches itself: some vertex has more than two boundary edges.

@@ -102,10 +102,10 @@ enum class HoleAction {
 struct HoleReport {
   int index = 0;  ///< index into InpaintResult::holes
   HoleAction action = HoleAction::Skipped;
-  std::string reason;      ///< why it was skipped or failed; empty when filled
+  std::string reason;  ///< why it was skipped or failed; empty when filled
   int new_faces = 0, new_vertices = 0;
-  bool faired = false;     ///< CGAL's fairing succeeded (a filled but unfaired patch is kept)
-  bool features = false;   ///< the feature recovery ran on this hole
+  bool faired = false;          ///< CGAL's fairing succeeded (a filled but unfaired patch is kept)
+  bool features = false;        ///< the feature recovery ran on this hole
   std::string features_reason;  ///< what the crease test saw (filled holes, recover_features)
 };
 
@@ -115,14 +115,14 @@ struct InpaintResult {
   Eigen::MatrixXd V;
   /// #F' by 3: the input faces first, in order, then the new faces.
   Eigen::MatrixXi F;
-  std::vector<bool> new_faces;     ///< #F' flags: face added by the fill
-  std::vector<bool> new_vertices;  ///< #V' flags: vertex added by the fill
-  std::vector<Hole> holes;         ///< every hole found, as find_holes() returns them
-  std::vector<HoleReport> reports; ///< one per hole, same order
+  std::vector<bool> new_faces;      ///< #F' flags: face added by the fill
+  std::vector<bool> new_vertices;   ///< #V' flags: vertex added by the fill
+  std::vector<Hole> holes;          ///< every hole found, as find_holes() returns them
+  std::vector<HoleReport> reports;  ///< one per hole, same order
   int filled = 0, skipped = 0, failed = 0;
-  int featured = 0;                ///< filled holes the feature recovery ran on
-  int moved_input_vertices = 0;    ///< input vertices freed by free_ring
-  int crease_flips = 0;            ///< edge flips made by the feature recovery
+  int featured = 0;              ///< filled holes the feature recovery ran on
+  int moved_input_vertices = 0;  ///< input vertices freed by free_ring
+  int crease_flips = 0;          ///< edge flips made by the feature recovery
   /// Reports of the last round, on the working region around the recovered holes (their own
   /// face and edge numbering; empty when nothing was solved).
   NormalFilterResult normal_report;

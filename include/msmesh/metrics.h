@@ -76,7 +76,7 @@ Evaluation evaluate(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Ei
 ///  - result vertices farther than t from every input vertex (the new surface): their
 ///    distance to the truth's surface.
 struct InpaintErrors {
-  Eigen::Index points = 0;   ///< number of distances measured (both sets)
+  Eigen::Index points = 0;  ///< number of distances measured (both sets)
   double max = 0, mean = 0, rms = 0;
   Eigen::Index new_faces = 0;
   /// Mean angle (degrees) between each new face's normal and the normal of the truth face

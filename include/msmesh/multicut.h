@@ -37,12 +37,12 @@ struct MulticutResult {
   /// #nodes cluster labels in [0, count), numbered in order of their first node; every
   /// cluster is connected in the graph.
   Eigen::VectorXi labels;
-  int count = 0;                 ///< number of clusters
-  double objective = 0;          ///< Σ costs of cut edges (of the final labels)
-  double objective_greedy = 0;   ///< the same after GAEC alone
-  int contractions = 0;          ///< edges contracted by GAEC
-  int local_rounds = 0;          ///< local-search rounds run
-  int local_moves = 0;           ///< improving moves applied by the local search
+  int count = 0;                ///< number of clusters
+  double objective = 0;         ///< Σ costs of cut edges (of the final labels)
+  double objective_greedy = 0;  ///< the same after GAEC alone
+  int contractions = 0;         ///< edges contracted by GAEC
+  int local_rounds = 0;         ///< local-search rounds run
+  int local_moves = 0;          ///< improving moves applied by the local search
 };
 
 /// Solves the minimum-cost multicut of the graph with `num_nodes` nodes, `edges` (#E by 2 node

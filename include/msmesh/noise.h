@@ -22,7 +22,7 @@ struct NoiseOptions {
   /// `sigma` in `direction` (the literature uses a large sigma, e.g. 0.5–1, and Random).
   double impulsive_fraction = 0.0;
   std::uint64_t seed = 0;  ///< in [0, 2^53] (a value a double holds exactly, as the CLI and Python pass it)
-  void validate() const;  ///< throws InvalidInput naming the parameter and its valid range (noise_parameters())
+  void validate() const;   ///< throws InvalidInput naming the parameter and its valid range (noise_parameters())
 };
 
 /// sigma (in [0, 1e6]), impulsive (the fraction, in [0, 1]) and seed: names, ranges and help,

@@ -23,8 +23,8 @@ struct NormalFilterOptions {
   double beta = 0.02;     ///< β > 0, weight of the Ambrosio–Tortorelli edge term
   double gamma = 2.0;     ///< γ > 0, weight of the (non)convex normal-variation term
   double epsilon = 1e-3;  ///< ε > 0, phase-field width (§5.1)
-  double rho = 0.1;       ///< ρ > 0, non-convexity of φ₂ (§5.1 suggests 0.9 for CAD, 0.1 organic; measured: docs/presets.md)
-  double penalty = 2.0;   ///< r_p > 0, ADMM penalty (§5.1)
+  double rho = 0.1;  ///< ρ > 0, non-convexity of φ₂ (§5.1 suggests 0.9 for CAD, 0.1 organic; measured: docs/presets.md)
+  double penalty = 2.0;       ///< r_p > 0, ADMM penalty (§5.1)
   double relaxation = 1.618;  ///< ν in (0, (1+√5)/2), multiplier step (§5.1)
   int max_iterations = 30;    ///< k ≥ 1 (§5.1)
   double tolerance = 1e-6;    ///< ε₁: stop when ‖N^{k+1} − N^k‖_U < ε₁ (§5.1)
@@ -54,7 +54,7 @@ struct NormalFilterWeights {
 /// How Algorithm 1 ran: iterations, convergence and histories (no per-element arrays).
 struct NormalFilterStats {
   int iterations = 0;
-  bool converged = false;  ///< stopped by the tolerance rather than max_iterations
+  bool converged = false;                ///< stopped by the tolerance rather than max_iterations
   std::vector<double> residual_history;  ///< ‖p − ∇N‖_V per iteration (mean-edge units)
   std::vector<double> change_history;    ///< ‖N^{k+1} − N^k‖_U per iteration
   std::vector<double> energy_history;    ///< energy (15) per iteration (when record_energy)

@@ -6,6 +6,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+
 #include "msmesh/topology.h"
 
 namespace msmesh {

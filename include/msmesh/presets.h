@@ -30,11 +30,11 @@ DenoiseOptions preset_options(const std::string& name);
 
 /// What the "auto" rule saw on a mesh, and what it picked.
 struct PresetChoice {
-  std::string preset;          ///< "cad" or "smooth"
-  double sharp_fraction = 0;   ///< fraction of edge length with dihedral > 30° after pre-smoothing
-  double flat_fraction = 0;    ///< fraction of edge length with dihedral < 1° after pre-smoothing
-  double noise_level = 0;      ///< mean angle (radians) between input and pre-smoothed normals
-  std::string reason;          ///< one line: the figures and the thresholds that decided
+  std::string preset;         ///< "cad" or "smooth"
+  double sharp_fraction = 0;  ///< fraction of edge length with dihedral > 30° after pre-smoothing
+  double flat_fraction = 0;   ///< fraction of edge length with dihedral < 1° after pre-smoothing
+  double noise_level = 0;     ///< mean angle (radians) between input and pre-smoothed normals
+  std::string reason;         ///< one line: the figures and the thresholds that decided
 };
 
 /// The "auto" rule: picks "cad" or "smooth" for a mesh (#V by 3, #F by 3) from the mesh itself

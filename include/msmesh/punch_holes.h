@@ -8,12 +8,12 @@
 namespace msmesh {
 
 struct PunchResult {
-  Eigen::MatrixXd V;   ///< #V' by 3 the remaining vertices (unreferenced ones removed)
-  Eigen::MatrixXi F;   ///< #F' by 3 the remaining faces, in their input order, re-indexed
-  Eigen::VectorXi vertex_map;      ///< #V' : input row of each output vertex
-  Eigen::VectorXi old_to_new;      ///< #V  : output row of each input vertex, -1 when removed
-  std::vector<int> centers;        ///< input vertex at the centre of each hole punched
-  int punched = 0;                 ///< holes made (fewer than asked when no room was left)
+  Eigen::MatrixXd V;           ///< #V' by 3 the remaining vertices (unreferenced ones removed)
+  Eigen::MatrixXi F;           ///< #F' by 3 the remaining faces, in their input order, re-indexed
+  Eigen::VectorXi vertex_map;  ///< #V' : input row of each output vertex
+  Eigen::VectorXi old_to_new;  ///< #V  : output row of each input vertex, -1 when removed
+  std::vector<int> centers;    ///< input vertex at the centre of each hole punched
+  int punched = 0;             ///< holes made (fewer than asked when no room was left)
 };
 
 /// Punches `count` holes into (V, F): geodesic disks (Dijkstra along edges) of `radius` mean

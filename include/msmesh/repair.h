@@ -45,18 +45,18 @@ const ParameterTable<RepairOptions>& repair_parameters();
 struct RepairReport {
   Eigen::Index vertices_before = 0, faces_before = 0;
   Eigen::Index vertices_after = 0, faces_after = 0;
-  Eigen::Index merged_vertices = 0;              ///< vertices redirected to an equal/close earlier one
-  Eigen::Index degenerate_faces_removed = 0;     ///< faces repeating a vertex
-  Eigen::Index zero_area_faces_removed = 0;      ///< faces of (near) zero area
+  Eigen::Index merged_vertices = 0;           ///< vertices redirected to an equal/close earlier one
+  Eigen::Index degenerate_faces_removed = 0;  ///< faces repeating a vertex
+  Eigen::Index zero_area_faces_removed = 0;   ///< faces of (near) zero area
   Eigen::Index duplicate_faces_removed = 0;
-  Eigen::Index flipped_faces = 0;                ///< faces reversed by orientation
-  Eigen::Index components = 0;                   ///< connected components of faces after repair
-  Eigen::Index non_orientable_components = 0;    ///< components that cannot be oriented (Moebius-like)
-  Eigen::Index split_vertices = 0;               ///< vertex copies added by split_non_manifold
+  Eigen::Index flipped_faces = 0;              ///< faces reversed by orientation
+  Eigen::Index components = 0;                 ///< connected components of faces after repair
+  Eigen::Index non_orientable_components = 0;  ///< components that cannot be oriented (Moebius-like)
+  Eigen::Index split_vertices = 0;             ///< vertex copies added by split_non_manifold
   Eigen::Index unreferenced_vertices_removed = 0;
-  Eigen::Index unreferenced_vertices = 0;        ///< vertices no face refers to, after repair
-  Eigen::Index non_manifold_edges = 0;           ///< after repair
-  Eigen::Index non_manifold_vertices = 0;        ///< after repair
+  Eigen::Index unreferenced_vertices = 0;  ///< vertices no face refers to, after repair
+  Eigen::Index non_manifold_edges = 0;     ///< after repair
+  Eigen::Index non_manifold_vertices = 0;  ///< after repair
   /// #V_before: new index of each input vertex (-1 if removed). Identity unless
   /// remove_unreferenced.
   Eigen::VectorXi vertex_map;

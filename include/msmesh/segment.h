@@ -50,10 +50,10 @@ struct SegmentResult {
   Eigen::VectorXd areas;  ///< count areas, in the mesh's units (areas(0) the largest)
   /// Multicut objective Σ_{cut edges} log((1 − p)/p) of `labels` (after the small-segment merge).
   double objective = 0;
-  int multicut_count = 0;  ///< segments the multicut found, before the small-segment merge
-  Eigen::MatrixXd normals;         ///< #F by 3 regularised normals from Algorithm 1
-  Eigen::VectorXd v;               ///< #E edge field from Algorithm 1: v[e] belongs to Topology::edges.row(e) of F
-  Eigen::VectorXd v_normalized;    ///< #E, v rescaled to [0, 1] (min → 0, max → 1)
+  int multicut_count = 0;             ///< segments the multicut found, before the small-segment merge
+  Eigen::MatrixXd normals;            ///< #F by 3 regularised normals from Algorithm 1
+  Eigen::VectorXd v;                  ///< #E edge field from Algorithm 1: v[e] belongs to Topology::edges.row(e) of F
+  Eigen::VectorXd v_normalized;       ///< #E, v rescaled to [0, 1] (min → 0, max → 1)
   Eigen::VectorXd split_probability;  ///< #E p_e; 0 for boundary and non-manifold edges
   Eigen::MatrixXi edges;              ///< #E by 2: v[e], v_normalized[e], split_probability[e] belong to edges.row(e)
   NormalFilterStats normal_report;    ///< iterations and histories of Algorithm 1

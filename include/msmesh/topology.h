@@ -40,7 +40,7 @@ struct TopologySummary {
   Eigen::Index non_manifold_vertices = 0;  ///< vertices whose face fan is not one disk/half-disk
   Eigen::Index unreferenced_vertices = 0;
   Eigen::Index inconsistently_oriented_edges = 0;  ///< two faces walking an edge the same way
-  Eigen::Index components = 0;                      ///< connected components of faces
+  Eigen::Index components = 0;                     ///< connected components of faces
   /// Boundary loops as ordered vertex cycles (only through manifold boundary vertices).
   std::vector<std::vector<int>> boundary_loops;
 };

@@ -17,11 +17,11 @@ namespace msmesh {
 /// Options of Algorithm 2. The defaults are those of preset "cad" (presets.h); ranges and help
 /// in vertex_update_parameters() (parameters.h).
 struct VertexUpdateOptions {
-  double omega1 = 1.0;   ///< ω₁ > 0, normal matching (fixed to 1 in the paper)
-  double omega2 = 0.03;  ///< ω₂ ≥ 0, fairness across edges weighted by v² (paper range [0.001, 0.1])
-  double omega3 = 0.1;   ///< ω₃ > 0, closeness to the input positions (paper range [0.001, 0.1])
-  int max_iterations = 30;   ///< k ≥ 1
-  double tolerance = 1e-6;   ///< ε₂: stop when the RMS vertex move (mean-edge units) < ε₂
+  double omega1 = 1.0;      ///< ω₁ > 0, normal matching (fixed to 1 in the paper)
+  double omega2 = 0.03;     ///< ω₂ ≥ 0, fairness across edges weighted by v² (paper range [0.001, 0.1])
+  double omega3 = 0.1;      ///< ω₃ > 0, closeness to the input positions (paper range [0.001, 0.1])
+  int max_iterations = 30;  ///< k ≥ 1
+  double tolerance = 1e-6;  ///< ε₂: stop when the RMS vertex move (mean-edge units) < ε₂
   /// Solver of the V-step (ω₁KᵀK + ω₂HᵀH + ω₃I) V = ...; Auto: Cholesky below 40K vertices, CG above.
   LinearSolver solver = LinearSolver::Auto;
   /// Relative residual at which conjugate gradients stop (solver CG).
@@ -38,8 +38,8 @@ struct VertexUpdateWeights {
 struct VertexUpdateStats {
   int iterations = 0;
   bool converged = false;
-  std::vector<double> change_history;  ///< RMS vertex move per iteration (mean-edge units)
-  std::vector<int> solver_iterations;  ///< CG iterations of each V-step (solver CG)
+  std::vector<double> change_history;     ///< RMS vertex move per iteration (mean-edge units)
+  std::vector<int> solver_iterations;     ///< CG iterations of each V-step (solver CG)
   Eigen::Index fallback_projections = 0;  ///< faces that used the degenerate projection (last iteration)
 };
 

@@ -15,8 +15,8 @@ namespace {
 
 py::dict denoise_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const DenoiseOptions& options,
                          const py::object& progress) {
-  const DenoiseResult r = run_without_gil(
-      progress, [&](const ProgressCallback& cb) { return denoise(V, F, options, cb); });
+  const DenoiseResult r =
+      run_without_gil(progress, [&](const ProgressCallback& cb) { return denoise(V, F, options, cb); });
   py::dict d = normal_report(r.normal_report);
   add_vertex_report(d, r.vertex_report);
   d["V"] = to_numpy(r.V);
@@ -36,13 +36,11 @@ py::dict denoise_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, con
   return d;
 }
 
-py::dict filter_normals_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
-                                const NormalFilterOptions& options, const Eigen::MatrixXd& normals0,
-                                const py::object& progress) {
+py::dict filter_normals_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const NormalFilterOptions& options,
+                                const Eigen::MatrixXd& normals0, const py::object& progress) {
   const auto t0 = std::chrono::steady_clock::now();
-  const NormalFilterResult r = run_without_gil(progress, [&](const ProgressCallback& cb) {
-    return filter_normals(V, F, options, {}, cb, normals0);
-  });
+  const NormalFilterResult r = run_without_gil(
+      progress, [&](const ProgressCallback& cb) { return filter_normals(V, F, options, {}, cb, normals0); });
   py::dict d = normal_report(r);
   d["seconds_normals"] = seconds_since(t0);
   d["normals"] = to_numpy(r.normals);
@@ -90,8 +88,8 @@ void bind_denoise(py::module_& m) {
       .def_readonly("residual", &ProgressEvent::residual)
       .def("__repr__", [](const ProgressEvent& e) {
         return "ProgressEvent(stage=" + std::string(py::repr(py::str(e.stage))) +
-               ", iteration=" + std::to_string(e.iteration) + ", max_iterations=" +
-               std::to_string(e.max_iterations) + ", residual=" + std::string(py::repr(py::float_(e.residual))) + ")";
+               ", iteration=" + std::to_string(e.iteration) + ", max_iterations=" + std::to_string(e.max_iterations) +
+               ", residual=" + std::string(py::repr(py::float_(e.residual))) + ")";
       });
 
   py::enum_<DenoiseMethod>(m, "DenoiseMethod")
@@ -154,8 +152,8 @@ void bind_denoise(py::module_& m) {
   m.def("preset_options", &preset_options, py::arg("name"));
   m.def("choose_preset", &choose_preset_binding, py::arg("V"), py::arg("F"));
   m.def("denoise", &denoise_binding, py::arg("V"), py::arg("F"), py::arg("options"), py::arg("progress") = py::none());
-  m.def("filter_normals", &filter_normals_binding, py::arg("V"), py::arg("F"), py::arg("options"),
-        py::arg("normals0"), py::arg("progress") = py::none());
+  m.def("filter_normals", &filter_normals_binding, py::arg("V"), py::arg("F"), py::arg("options"), py::arg("normals0"),
+        py::arg("progress") = py::none());
   m.def("update_vertices", &update_vertices_binding, py::arg("V"), py::arg("F"), py::arg("N"), py::arg("v"),
         py::arg("options"), py::arg("progress") = py::none());
   m.def("set_threads", &set_threads_binding, py::arg("n"));

@@ -36,9 +36,12 @@ py::list find_holes_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) 
 
 const char* hole_action_name(HoleAction a) {
   switch (a) {
-    case HoleAction::Filled: return "filled";
-    case HoleAction::Skipped: return "skipped";
-    case HoleAction::Failed: return "failed";
+    case HoleAction::Filled:
+      return "filled";
+    case HoleAction::Skipped:
+      return "skipped";
+    case HoleAction::Failed:
+      return "failed";
   }
   return "unknown";
 }

@@ -21,9 +21,12 @@ py::object add_noise_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
                              const std::string& direction, double impulsive, std::uint64_t seed) {
   NoiseOptions o;
   o.sigma = sigma;
-  if (direction == "normal") o.direction = NoiseDirection::Normal;
-  else if (direction == "random") o.direction = NoiseDirection::Random;
-  else throw InvalidInput("unknown noise direction '" + direction + "'; valid: normal, random");
+  if (direction == "normal")
+    o.direction = NoiseDirection::Normal;
+  else if (direction == "random")
+    o.direction = NoiseDirection::Random;
+  else
+    throw InvalidInput("unknown noise direction '" + direction + "'; valid: normal, random");
   o.impulsive_fraction = impulsive;
   o.seed = seed;
   const Eigen::MatrixXd noisy =
@@ -75,7 +78,8 @@ py::dict repair_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, cons
   Mesh mesh;
   mesh.V = V;
   mesh.F = F;
-  const RepairReport r = run_without_gil(py::none(), [&](const ProgressCallback&) { return repair_mesh(mesh, options); });
+  const RepairReport r =
+      run_without_gil(py::none(), [&](const ProgressCallback&) { return repair_mesh(mesh, options); });
   py::dict report;
   report["merged_vertices"] = r.merged_vertices;
   report["degenerate_faces_removed"] = r.degenerate_faces_removed;

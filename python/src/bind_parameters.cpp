@@ -19,9 +19,12 @@ namespace {
 
 const char* type_name(ParameterType t) {
   switch (t) {
-    case ParameterType::Real: return "float";
-    case ParameterType::Integer: return "int";
-    case ParameterType::Boolean: return "bool";
+    case ParameterType::Real:
+      return "float";
+    case ParameterType::Integer:
+      return "int";
+    case ParameterType::Boolean:
+      return "bool";
   }
   return "float";
 }
@@ -65,9 +68,15 @@ py::dict values(const ParameterTable<Options>& t, const Options& o) {
   for (const Parameter<Options>& p : t) {
     const double x = p.get(o);
     switch (p.info.type) {
-      case ParameterType::Boolean: d[py::str(p.info.key())] = x != 0; break;
-      case ParameterType::Integer: d[py::str(p.info.key())] = static_cast<long long>(x); break;
-      case ParameterType::Real: d[py::str(p.info.key())] = x; break;
+      case ParameterType::Boolean:
+        d[py::str(p.info.key())] = x != 0;
+        break;
+      case ParameterType::Integer:
+        d[py::str(p.info.key())] = static_cast<long long>(x);
+        break;
+      case ParameterType::Real:
+        d[py::str(p.info.key())] = x;
+        break;
     }
   }
   return d;

@@ -24,7 +24,7 @@ py::handle new_exception(py::module_& m, const char* name, const char* doc, cons
   PyObject* cls = PyErr_NewExceptionWithDoc(qualified.c_str(), doc, bases.ptr(), nullptr);
   if (!cls) throw py::error_already_set();
   m.attr(name) = py::reinterpret_borrow<py::object>(cls);  // the module holds one reference
-  return cls;                                               // ... and the registry the other
+  return cls;                                              // ... and the registry the other
 }
 
 }  // namespace
@@ -33,9 +33,9 @@ void register_exceptions(py::module_& m) {
   ExceptionClasses& c = exception_classes();
   c.error = new_exception(m, "Error", "Base class of every error msmesh raises.",
                           py::make_tuple(py::handle(PyExc_Exception)));
-  c.invalid_input = new_exception(m, "InvalidInputError",
-                                  "An input array, mesh or parameter is not acceptable (a ValueError).",
-                                  py::make_tuple(c.error, py::handle(PyExc_ValueError)));
+  c.invalid_input =
+      new_exception(m, "InvalidInputError", "An input array, mesh or parameter is not acceptable (a ValueError).",
+                    py::make_tuple(c.error, py::handle(PyExc_ValueError)));
   c.io_error = new_exception(m, "IoError", "Reading or writing a mesh file failed (an OSError).",
                              py::make_tuple(c.error, py::handle(PyExc_OSError)));
   c.solver_error = new_exception(m, "SolverError", "A linear solve or factorisation failed (a RuntimeError).",
@@ -63,7 +63,6 @@ void register_exceptions(py::module_& m) {
 // msmesh.set_threads(n): process-wide for Python (0: the default). The library's setting is
 // OpenMP's, which belongs to each thread, so every call applies it in the thread it runs in.
 std::atomic<int> g_threads{0};
-
 
 py::dict normal_report(const NormalFilterStats& r) {
   py::dict d;

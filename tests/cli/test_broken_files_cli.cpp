@@ -6,14 +6,14 @@
 #include <filesystem>
 #include <string>
 
-#include "cli_helpers.h"
 #include "bad_files.h"
+#include "cli_helpers.h"
 #include "msmesh/io.h"
 
 using namespace msmesh;
 using msmesh::test::run_cli;
-using msmesh::test::write_bytes;
 using msmesh::test::TempDir;
+using msmesh::test::write_bytes;
 namespace fs = std::filesystem;
 
 TEST(BrokenFiles, CliExitsNonZeroNamesFileAndProblemAndWritesNothing) {

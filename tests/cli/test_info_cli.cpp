@@ -9,8 +9,8 @@
 #include <random>
 #include <string>
 
-#include "msmesh/io.h"
 #include "cli_helpers.h"
+#include "msmesh/io.h"
 
 using namespace msmesh;
 namespace fs = std::filesystem;
@@ -19,7 +19,8 @@ namespace {
 
 fs::path temp_folder() {
   std::random_device rd;
-  fs::path p = fs::temp_directory_path() / ("msmesh_test_info_" + std::to_string(::getpid()) + "_" + std::to_string(rd()));
+  fs::path p =
+      fs::temp_directory_path() / ("msmesh_test_info_" + std::to_string(::getpid()) + "_" + std::to_string(rd()));
   fs::create_directories(p);
   return p;
 }
@@ -32,9 +33,10 @@ TEST(InfoCli, JsonSummaryOfAGrid) {
   write_mesh(path, test::grid(3));
   const test::CliRun r = test::run_cli("info '" + path + "' --json");
   EXPECT_EQ(r.status, 0) << r.out;
-  for (const char* part : {"\"vertices\":16", "\"faces\":18", "\"edges\":33", "\"boundary_edges\":12",
-                           "\"boundary_loops\":1", "\"largest_boundary_loops\":[12]", "\"components\":1",
-                           "\"non_manifold_edges\":0", "\"dropped_degenerate_faces\":0", "\"bbox_diagonal\":1.414213562"})
+  for (const char* part :
+       {"\"vertices\":16", "\"faces\":18", "\"edges\":33", "\"boundary_edges\":12", "\"boundary_loops\":1",
+        "\"largest_boundary_loops\":[12]", "\"components\":1", "\"non_manifold_edges\":0",
+        "\"dropped_degenerate_faces\":0", "\"bbox_diagonal\":1.414213562"})
     EXPECT_NE(r.out.find(part), std::string::npos) << part << " not in " << r.out;
   EXPECT_EQ(r.out.find('\n'), r.out.size() - 1) << "one line of JSON expected";
   fs::remove_all(dir);
@@ -46,14 +48,15 @@ TEST(InfoCli, TextSummaryCountsDefects) {
   const std::string path = (dir / "fin.obj").string();
   {
     std::FILE* f = std::fopen(path.c_str(), "w");
-    std::fputs("v 0 0 0\nv 1 0 0\nv 0.5 1 0\nv 0.5 -1 0.2\nv 0.5 0 1\nv 9 9 9\nf 1 2 3\nf 2 1 4\nf 1 2 5\nf 1 1 2\n", f);
+    std::fputs("v 0 0 0\nv 1 0 0\nv 0.5 1 0\nv 0.5 -1 0.2\nv 0.5 0 1\nv 9 9 9\nf 1 2 3\nf 2 1 4\nf 1 2 5\nf 1 1 2\n",
+               f);
     std::fclose(f);
   }
   const test::CliRun r = test::run_cli("info '" + path + "'");
   EXPECT_EQ(r.status, 0) << r.out;
-  for (const char* part : {"vertices:                      6", "faces:                         3",
-                           "non-manifold edges:            1", "unreferenced vertices:         1",
-                           "dropped degenerate faces:      1"})
+  for (const char* part :
+       {"vertices:                      6", "faces:                         3", "non-manifold edges:            1",
+        "unreferenced vertices:         1", "dropped degenerate faces:      1"})
     EXPECT_NE(r.out.find(part), std::string::npos) << part << " not in " << r.out;
   fs::remove_all(dir);
 }

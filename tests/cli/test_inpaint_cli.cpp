@@ -19,7 +19,8 @@ TEST(InpaintCli, ListsFillsAndRefusesToOverwriteTheInput) {
   const std::string truth = (dir / "cube.obj").string(), holes = (dir / "holes.obj").string(),
                     out = (dir / "out.obj").string();
   write_mesh(truth, cube);
-  test::CliRun r = test::run_cli("holes '" + truth + "' -o '" + holes + "' --count 2 --radius 2 --seed 3 --on-features");
+  test::CliRun r =
+      test::run_cli("holes '" + truth + "' -o '" + holes + "' --count 2 --radius 2 --seed 3 --on-features");
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("punched 2 of 2"), std::string::npos) << r.out;
 

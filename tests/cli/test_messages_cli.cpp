@@ -7,12 +7,12 @@
 
 #include <filesystem>
 
+#include "cli_helpers.h"
 #include "msmesh/denoise.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 #include "msmesh/metrics.h"
 #include "msmesh/topology.h"
-#include "cli_helpers.h"
 
 using namespace msmesh;
 namespace fs = std::filesystem;
@@ -84,9 +84,9 @@ TEST_F(MessagesCli, ErrorsOfTheWorkNameTheInput) {
   Mesh m = test::grid(4);
   m.V *= 1e300;  // coordinates whose squared differences overflow
   write_mesh(p("huge.obj"), m);
-  for (const std::string& cmd : {"denoise " + p("huge.obj") + " -o " + p("o.obj"),
-                                 "eval " + p("huge.obj") + " --truth " + p("huge.obj"),
-                                 "noise " + p("huge.obj") + " -o " + p("n.obj")}) {
+  for (const std::string& cmd :
+       {"denoise " + p("huge.obj") + " -o " + p("o.obj"), "eval " + p("huge.obj") + " --truth " + p("huge.obj"),
+        "noise " + p("huge.obj") + " -o " + p("n.obj")}) {
     SCOPED_TRACE(cmd);
     const test::CliRun r = test::run_cli(cmd);
     EXPECT_EQ(r.status, 1) << r.out;
@@ -125,7 +125,8 @@ TEST(MessagesLibrary, PartsOfVeryDifferentScaleAreEachDenoised) {
   // to the clean grids (before, the small part was left to the large part's scale).
   const Mesh clean = test::grid(8);
   Mesh noisy = clean;
-  for (Eigen::Index i = 0; i < noisy.V.rows(); ++i) noisy.V(i, 2) += 0.02 * (static_cast<double>((i * 7919) % 13) / 13 - 0.5);
+  for (Eigen::Index i = 0; i < noisy.V.rows(); ++i)
+    noisy.V(i, 2) += 0.02 * (static_cast<double>((i * 7919) % 13) / 13 - 0.5);
   const Eigen::Index n = clean.V.rows();
   Eigen::MatrixXd V(2 * n, 3), C(2 * n, 3);
   V << noisy.V, noisy.V * 1e-5;

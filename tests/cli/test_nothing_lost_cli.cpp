@@ -13,8 +13,8 @@
 using namespace msmesh;
 using msmesh::test::read_bytes;
 using msmesh::test::run_cli;
-using msmesh::test::write_bytes;
 using msmesh::test::TempDir;
+using msmesh::test::write_bytes;
 namespace fs = std::filesystem;
 
 TEST(NothingLost, InputIsNeverOverwrittenWithoutInPlace) {

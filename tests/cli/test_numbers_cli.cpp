@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "cli_helpers.h"
 #include "msmesh/errors.h"
 #include "msmesh/holes.h"
 #include "msmesh/inpaint.h"
@@ -17,7 +18,6 @@
 #include "msmesh/noise.h"
 #include "msmesh/render.h"
 #include "msmesh/repair.h"
-#include "cli_helpers.h"
 
 using namespace msmesh;
 namespace fs = std::filesystem;
@@ -105,9 +105,8 @@ TEST_F(NumbersCli, InpaintDensityHasAnUpperBoundAndAMemoryCheck) {
   // A density in range whose fill needs more than the memory limit fails before any work.
   const std::string holed = out("holed.obj");
   write_mesh(holed, test::grid_with_hole());
-  const test::CliRun r =
-      test::run_command("MSMESH_MEMORY_LIMIT=1K " + std::string(MSMESH_CLI_PATH) + " inpaint " + holed + " -o " +
-                        out("f.obj") + " --density 20");
+  const test::CliRun r = test::run_command("MSMESH_MEMORY_LIMIT=1K " + std::string(MSMESH_CLI_PATH) + " inpaint " +
+                                           holed + " -o " + out("f.obj") + " --density 20");
   EXPECT_EQ(r.status, 1) << r.out;
   EXPECT_NE(r.out.find("needs about"), std::string::npos) << r.out;
   EXPECT_FALSE(fs::exists(out("f.obj")));

@@ -18,8 +18,8 @@
 #include <thread>
 #include <vector>
 
-#include "msmesh/io.h"
 #include "cli_helpers.h"
+#include "msmesh/io.h"
 
 namespace {
 
@@ -261,8 +261,8 @@ TEST(SpecialOutputs, DashIsStandardOutputForPicturesAndTextNotForMeshes) {
   EXPECT_NE(read_bytes(err).find("\"segments\""), std::string::npos) << read_bytes(err);
   // Another name of standard output (/dev/stdout, the file it is redirected to) is written the
   // same way: the data alone, the summary on stderr.
-  run = run_command("(" + std::string(MSMESH_CLI_PATH) + " render " + q(s.in) + " -o /dev/stdout 2>" + q(err) +
-                    ") > " + q(data));
+  run = run_command("(" + std::string(MSMESH_CLI_PATH) + " render " + q(s.in) + " -o /dev/stdout 2>" + q(err) + ") > " +
+                    q(data));
   EXPECT_EQ(run.status, 0) << read_bytes(err);
   EXPECT_EQ(read_bytes(data).substr(0, 8), "\x89PNG\r\n\x1a\n");
   EXPECT_NE(read_bytes(err).find("rendered"), std::string::npos) << read_bytes(err);

@@ -2,11 +2,11 @@
 // `msmesh params` prints them, and typed values are checked with the option's name.
 #include <gtest/gtest.h>
 
+#include "cli_helpers.h"
 #include "msmesh/inpaint.h"
 #include "msmesh/parameters.h"
 #include "msmesh/presets.h"
 #include "msmesh/segment.h"
-#include "cli_helpers.h"
 
 using namespace msmesh;
 

@@ -11,8 +11,8 @@
 
 using namespace msmesh;
 using msmesh::test::run_cli;
-using msmesh::test::write_bytes;
 using msmesh::test::TempDir;
+using msmesh::test::write_bytes;
 namespace fs = std::filesystem;
 
 TEST(Repair, CliSummaryJsonAndErrors) {
@@ -23,9 +23,9 @@ TEST(Repair, CliSummaryJsonAndErrors) {
               "f 1 2 3\nf 5 3 4\nf 1 2 3\nf 1 1 2\n");
   auto run = run_cli("repair " + in + " -o " + out);
   ASSERT_EQ(run.status, 0) << run.out;
-  for (const char* line : {"dropped on reading, faces repeating a vertex: 1", "merged duplicate vertices: 1",
-                           "removed duplicate faces: 1", "flipped faces to orient components consistently: 1",
-                           "remaining: 1 components", "--remove-unreferenced"})
+  for (const char* line :
+       {"dropped on reading, faces repeating a vertex: 1", "merged duplicate vertices: 1", "removed duplicate faces: 1",
+        "flipped faces to orient components consistently: 1", "remaining: 1 components", "--remove-unreferenced"})
     EXPECT_NE(run.out.find(line), std::string::npos) << line << "\n" << run.out;
   const Mesh fixed = read_mesh(out);
   EXPECT_EQ(fixed.V.rows(), 5);

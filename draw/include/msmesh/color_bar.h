@@ -10,10 +10,10 @@ namespace msmesh {
 
 /// A horizontal colour bar with tick labels, for a figure's legend.
 struct ColorBar {
-  ColorMap map;         ///< colours of [0,1]
-  double min = 0, max = 1;  ///< the values at the two ends (labels)
-  int ticks = 3;        ///< labelled ticks, evenly spaced, ends included (≥ 2)
-  std::string title;    ///< drawn left of the bar, e.g. "angle error (deg)"
+  ColorMap map;                 ///< colours of [0,1]
+  double min = 0, max = 1;      ///< the values at the two ends (labels)
+  int ticks = 3;                ///< labelled ticks, evenly spaced, ends included (≥ 2)
+  std::string title;            ///< drawn left of the bar, e.g. "angle error (deg)"
   bool max_is_clamped = false;  ///< label the top end ">=max" (larger values share its colour)
 };
 

@@ -32,8 +32,10 @@ void fill_rect(Image& image, int x, int y, int w, int h, const Eigen::Vector3d& 
 void blit(Image& dst, const Image& src, int x, int y);
 
 /// Lays `panels` out left to right, `gap` pixels apart, on `background`, tops aligned.
-Image hstack(const std::vector<Image>& panels, int gap = 0, const Eigen::Vector3d& background = Eigen::Vector3d::Ones());
+Image hstack(const std::vector<Image>& panels, int gap = 0,
+             const Eigen::Vector3d& background = Eigen::Vector3d::Ones());
 /// Lays `panels` out top to bottom, `gap` pixels apart, left aligned.
-Image vstack(const std::vector<Image>& panels, int gap = 0, const Eigen::Vector3d& background = Eigen::Vector3d::Ones());
+Image vstack(const std::vector<Image>& panels, int gap = 0,
+             const Eigen::Vector3d& background = Eigen::Vector3d::Ones());
 
 }  // namespace msmesh

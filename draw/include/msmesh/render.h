@@ -34,10 +34,10 @@ struct RenderOptions {
   int width = 800, height = 600;  ///< output size in pixels, each in [1, 16384]
   View view = View::Iso;
   Projection projection = Projection::Orthographic;
-  double fov_deg = 30;    ///< perspective only: field of view in (0, 120) degrees (sets the distance)
-  int supersample = 2;    ///< s: s×s samples per pixel, averaged (anti-aliasing); in [1, 4]
-  double margin = 0.05;   ///< fraction of width/height left empty on each side, in [0, 0.45]
-  double ambient = 0.3;   ///< shade = ambient + diffuse·max(0, n·l), both ≥ 0
+  double fov_deg = 30;   ///< perspective only: field of view in (0, 120) degrees (sets the distance)
+  int supersample = 2;   ///< s: s×s samples per pixel, averaged (anti-aliasing); in [1, 4]
+  double margin = 0.05;  ///< fraction of width/height left empty on each side, in [0, 0.45]
+  double ambient = 0.3;  ///< shade = ambient + diffuse·max(0, n·l), both ≥ 0
   double diffuse = 0.7;
   /// Light direction in camera coordinates (x right, y up, z towards the viewer), normalised
   /// inside: upper left, in front. Off the view axis, so that the three visible faces of a cube

@@ -27,16 +27,15 @@ Mesh read_mesh_from_memory(std::string_view data, const std::string& format, con
 /// What read_mesh noticed besides the mesh itself.
 struct ReadNotes {
   Eigen::Index dropped_degenerate = 0;  ///< triangles repeating a vertex, dropped
-  bool had_normals = false;  ///< the file has vertex normals (per-vertex ones fill Mesh::vertex_normals;
-                             ///< per-corner ones, e.g. split at creases, are replaced by recomputed ones)
-  bool uv_dropped = false;   ///< OBJ texture coordinates with seams (one vertex, several vt): not per-vertex, dropped
+  bool had_normals = false;             ///< the file has vertex normals (per-vertex ones fill Mesh::vertex_normals;
+                                        ///< per-corner ones, e.g. split at creases, are replaced by recomputed ones)
+  bool uv_dropped = false;  ///< OBJ texture coordinates with seams (one vertex, several vt): not per-vertex, dropped
 };
 
 /// As above, and says what it noticed. OBJ "v x y z r g b" colours, "vt" texture coordinates
 /// and "vn" normals (per-vertex when every corner of a vertex names the same one), and PLY
 /// texture_u/texture_v (or u/v, s/t) and nx/ny/nz vertex properties fill the Mesh attributes.
 Mesh read_mesh(const std::string& path, ReadNotes& notes);
-Mesh read_mesh_from_memory(std::string_view data, const std::string& format, const std::string& name,
-                           ReadNotes& notes);
+Mesh read_mesh_from_memory(std::string_view data, const std::string& format, const std::string& name, ReadNotes& notes);
 
 }  // namespace msmesh
