@@ -31,18 +31,6 @@ struct Args {
   std::unique_ptr<ParameterOptions<InpaintOptions>> parameters;  // every InpaintOptions number (parameters.h)
 };
 
-const char* action_name(HoleAction a) {
-  switch (a) {
-    case HoleAction::Filled:
-      return "filled";
-    case HoleAction::Skipped:
-      return "skipped";
-    case HoleAction::Failed:
-      return "failed";
-  }
-  return "?";
-}
-
 std::string hole_note(const Hole& h) {
   if (!h.simple) return "boundary touches itself at vertex " + std::to_string(h.touching_vertex);
   if (h.outer_boundary) return "outer boundary (not filled unless listed)";
@@ -164,7 +152,7 @@ void run(const Args& a) {
     for (size_t i = 0; i < r.holes.size(); ++i) {
       Json h = hole_json(static_cast<int>(i), r.holes[i]);
       const HoleReport& rep = r.reports[i];
-      h.add("action", action_name(rep.action));
+      h.add("action", hole_action_name(rep.action));
       if (!rep.reason.empty()) h.add("reason", rep.reason);
       if (rep.action == HoleAction::Filled)
         h.add("new_faces", rep.new_faces)
@@ -193,7 +181,7 @@ void run(const Args& a) {
       const Hole& h = r.holes[i];
       const HoleReport& rep = r.reports[i];
       std::cout << "  hole " << i << " (" << h.edges << " edges, diameter " << fmt(h.diameter, 3)
-                << "): " << action_name(rep.action);
+                << "): " << hole_action_name(rep.action);
       if (rep.action == HoleAction::Filled) {
         std::cout << ", " << rep.new_faces << " faces, " << rep.new_vertices << " vertices";
         if (!rep.faired) std::cout << " (CGAL fairing failed: patch kept unfaired)";

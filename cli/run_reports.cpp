@@ -177,9 +177,7 @@ void write_inpaint_report(const std::string& path, const std::string& input_path
   t.header = {"hole", "edges", "diameter", "action", "new faces", "features"};
   for (size_t i = 0; i < r.holes.size(); ++i) {
     const HoleReport& rep = r.reports[i];
-    const char* action = rep.action == HoleAction::Filled   ? "filled"
-                         : rep.action == HoleAction::Failed ? "failed"
-                                                            : "skipped";
+    const char* action = hole_action_name(rep.action);
     t.rows.push_back({std::to_string(i), std::to_string(r.holes[i].edges), num(r.holes[i].diameter, 3),
                       std::string(action) + (rep.reason.empty() ? "" : " (" + rep.reason + ")"),
                       std::to_string(rep.new_faces),

@@ -31,6 +31,18 @@ NormalFilterOptions InpaintOptions::default_normal_options() { return inpaint_no
 
 VertexUpdateOptions InpaintOptions::default_vertex_options() { return inpaint_vertex_options(); }
 
+const char* hole_action_name(HoleAction action) {
+  switch (action) {
+    case HoleAction::Filled:
+      return "filled";
+    case HoleAction::Skipped:
+      return "skipped";
+    case HoleAction::Failed:
+      return "failed";
+  }
+  return "unknown";
+}
+
 void InpaintOptions::validate() const {
   for (int i : holes)
     if (i < 0) throw InvalidInput("inpainting: hole index " + std::to_string(i) + " is out of range; valid: >= 0");

@@ -98,6 +98,9 @@ enum class HoleAction {
   Failed,   ///< selected but CGAL could not fill it; left open
 };
 
+/// "filled", "skipped" or "failed" (as the CLI's summary, JSON and Python report say it).
+const char* hole_action_name(HoleAction action);
+
 /// What was done with one hole of find_holes().
 struct HoleReport {
   int index = 0;  ///< index into InpaintResult::holes

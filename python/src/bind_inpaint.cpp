@@ -34,18 +34,6 @@ py::list find_holes_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) 
   return out;
 }
 
-const char* hole_action_name(HoleAction a) {
-  switch (a) {
-    case HoleAction::Filled:
-      return "filled";
-    case HoleAction::Skipped:
-      return "skipped";
-    case HoleAction::Failed:
-      return "failed";
-  }
-  return "unknown";
-}
-
 py::dict inpaint_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const InpaintOptions& options,
                          const py::object& progress) {
   const InpaintResult r =
