@@ -14,7 +14,6 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "check.h"
 #include "msmesh/errors.h"
 #include "msmesh/parameters.h"
 #include "msmesh/topology.h"

@@ -7,7 +7,6 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "check.h"
 #include "msmesh/denoise.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
@@ -177,7 +176,7 @@ SegmentResult segment(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
 std::vector<std::vector<int>> feature_lines(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
                                             const Eigen::VectorXd& v, double threshold, int min_edges) {
   validate_mesh(V, F, "feature lines");
-  detail::check_range("feature lines", "threshold", threshold, {0, 1, true, false});
+  check_parameter("feature lines", "threshold", threshold, {0, 1, true, false});
   const Topology topo = build_topology(F, V.rows());
   if (v.size() != topo.num_edges())
     throw InvalidInput("feature lines: edge field has " + std::to_string(v.size()) + " values for " +

@@ -140,3 +140,33 @@ TEST(Parameters, ValuesAreFormattedExactlyAndShortly) {
   const ParameterInfo& project = find_parameter(normal_filter_parameters(), "project-each-iteration")->info;
   EXPECT_EQ(project.format(1), "on");
 }
+
+TEST(Parameters, CheckWithoutATableEntryNamesParameterValueAndRange) {
+  // check_parameter(group, name, value, range): for values that have no table entry (feature
+  // lines' threshold), with the tables' message.
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(message_of([] {
+              check_parameter("stage", "alpha", -1, {0, inf, true, false});
+            }),
+            "stage: alpha = -1 is out of range; valid: > 0");
+  EXPECT_EQ(message_of([] {
+              check_parameter("stage", "sigma", -2, {0, inf});
+            }),
+            "stage: sigma = -2 is out of range; valid: >= 0");
+  EXPECT_EQ(message_of([] {
+              check_parameter("stage", "k", 0, {1, 100});
+            }),
+            "stage: k = 0 is out of range; valid: in [1, 100]");
+  EXPECT_EQ(message_of([] {
+              check_parameter("stage", "t", 1, {0, 1, false, true});
+            }),
+            "stage: t = 1 is out of range; valid: in [0, 1)");
+  EXPECT_EQ(message_of([] {
+              check_parameter("stage", "t", 0, {0, 1, true, false});
+            }),
+            "stage: t = 0 is out of range; valid: in (0, 1]");
+  EXPECT_NE(message_of([] { check_parameter("stage", "t", std::nan(""), {0, 1}); }), "");
+  EXPECT_NE(message_of([] { check_parameter("stage", "t", inf, {0, inf}); }), "");
+  EXPECT_EQ(message_of([] { check_parameter("stage", "t", 1, {0, 1}); }), "");
+  EXPECT_EQ(message_of([] { check_parameter("stage", "t", 1e-300, {0, inf, true, false}); }), "");
+}
