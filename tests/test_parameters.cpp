@@ -144,13 +144,13 @@ TEST(Parameters, ValuesAreFormattedExactlyAndShortly) {
 TEST(Parameters, CheckWithoutATableEntryNamesParameterValueAndRange) {
   // check_parameter(group, name, value, range): for values that have no table entry (feature
   // lines' threshold), with the tables' message.
-  constexpr double inf = std::numeric_limits<double>::infinity();
+  constexpr double kInf = std::numeric_limits<double>::infinity();
   EXPECT_EQ(message_of([] {
-              check_parameter("stage", "alpha", -1, {0, inf, true, false});
+              check_parameter("stage", "alpha", -1, {0, kInf, true, false});
             }),
             "stage: alpha = -1 is out of range; valid: > 0");
   EXPECT_EQ(message_of([] {
-              check_parameter("stage", "sigma", -2, {0, inf});
+              check_parameter("stage", "sigma", -2, {0, kInf});
             }),
             "stage: sigma = -2 is out of range; valid: >= 0");
   EXPECT_EQ(message_of([] {
@@ -166,7 +166,7 @@ TEST(Parameters, CheckWithoutATableEntryNamesParameterValueAndRange) {
             }),
             "stage: t = 0 is out of range; valid: in (0, 1]");
   EXPECT_NE(message_of([] { check_parameter("stage", "t", std::nan(""), {0, 1}); }), "");
-  EXPECT_NE(message_of([] { check_parameter("stage", "t", inf, {0, inf}); }), "");
+  EXPECT_NE(message_of([] { check_parameter("stage", "t", kInf, {0, kInf}); }), "");
   EXPECT_EQ(message_of([] { check_parameter("stage", "t", 1, {0, 1}); }), "");
-  EXPECT_EQ(message_of([] { check_parameter("stage", "t", 1e-300, {0, inf, true, false}); }), "");
+  EXPECT_EQ(message_of([] { check_parameter("stage", "t", 1e-300, {0, kInf, true, false}); }), "");
 }
