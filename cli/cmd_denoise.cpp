@@ -18,6 +18,7 @@
 #include "msmesh/repair.h"
 #include "msmesh/threads.h"
 #include "msmesh/topology.h"
+#include "number_option.h"
 #include "output_plan.h"
 #include "parameter_options.h"
 #include "run_reports.h"
@@ -29,6 +30,7 @@ namespace {
 struct Args {
   std::string input, output, truth, field, preset = default_preset(), method = "nmstv", solver = "auto";
   bool json = false, quiet = false, in_place = false, ascii = false, repair = false;
+  double strength = 1.0;                                         // --strength (presets.h resolve_preset)
   std::string report;                                            // --report: HTML report (cli/run_reports.h)
   std::unique_ptr<ParameterOptions<DenoiseOptions>> parameters;  // --alpha ... (parameters.h)
 };
@@ -46,6 +48,8 @@ void run(const Args& a) {
   a.parameters->check();
   if (!a.field.empty() && method == DenoiseMethod::Bilateral)
     throw UsageError("--save-field needs --method nmstv or mstv (bilateral has no edge field)");
+  if (a.strength != 1.0 && method == DenoiseMethod::Bilateral)
+    throw UsageError("--strength needs --method nmstv or mstv (the bilateral baseline has its own parameters)");
   OutputPlan plan;  // every file of the run, checked before any work; outputs committed together
   plan.input(a.input).input(a.truth, "--truth").in_place(a.in_place);
   plan.output(a.output, OutputKind::Mesh, "-o")
@@ -65,7 +69,8 @@ void run(const Args& a) {
 
   // The bilateral baseline has its own parameters; the preset is unused (and not chosen).
   const ResolvedPreset preset =
-      resolve_preset(method == DenoiseMethod::Bilateral && a.preset == "auto" ? "cad" : a.preset, mesh.V, mesh.F);
+      resolve_preset(method == DenoiseMethod::Bilateral && a.preset == "auto" ? "cad" : a.preset, mesh.V, mesh.F,
+                     method == DenoiseMethod::Bilateral ? 1.0 : a.strength);
   DenoiseOptions o = preset.options;
   o.method = method;
   a.parameters->apply(o);
@@ -109,7 +114,13 @@ void run(const Args& a) {
     j.add("input", a.input).add("output", a.output).add("preset", preset.preset).add("method", a.method);
     j.add("preset_requested", preset.requested).add("preset_reason", preset.reason());
     if (preset.automatic)
-      j.add("auto_sharp_fraction", preset.choice.sharp_fraction).add("auto_flat_fraction", preset.choice.flat_fraction);
+      j.add("auto_sharp_fraction", preset.choice.sharp_fraction)
+          .add("auto_flat_fraction", preset.choice.flat_fraction)
+          .add("noise_sigma", preset.noise.sigma)
+          .add("noise_sigma_rms", preset.noise.sigma_rms)
+          .add("noise_outlier_fraction", preset.noise.outlier_fraction)
+          .add("noise_level_used", preset.sigma);
+    j.add("strength", preset.strength);
     j.add("vertices", static_cast<long long>(mesh.V.rows())).add("faces", static_cast<long long>(mesh.F.rows()));
     j.add("dropped_degenerate_faces", static_cast<long long>(notes.dropped_degenerate));
     if (a.repair) {
@@ -196,8 +207,8 @@ const Registrar kRegistration("denoise", 50, [](CLI::App& app) {
   std::vector<std::string> presets = preset_names();
   presets.insert(presets.begin(), "auto");
   c->add_option("--preset", a->preset,
-                "cad (sharp features), smooth (organic, scans) or auto (chosen from the mesh); `msmesh params` "
-                "shows the values")
+                "auto (from the mesh's noise and shape), cad (sharp features), smooth (organic), paper (Algorithms 1 "
+                "and 2 with the paper's settings); `msmesh params` shows the values")
       ->check(CLI::IsMember(presets))
       ->capture_default_str();
   c->add_option("--method", a->method, "nmstv (the paper), mstv (all IRLA weights 1), bilateral (Zheng et al. 2011)")
@@ -207,6 +218,10 @@ const Registrar kRegistration("denoise", 50, [](CLI::App& app) {
   for (const std::string& name : preset_names()) defaults.emplace_back(name, preset_options(name));
   a->parameters =
       std::make_unique<ParameterOptions<DenoiseOptions>>(c, denoise_parameters(), defaults, "(override the preset)");
+  add_number_option(c, "--strength", a->strength,
+                    cli_number("denoise", "strength", ParameterType::Real, {kMinStrength, kMaxStrength}),
+                    "How much to remove: 1 the default, larger smooths more, smaller keeps more (auto: scales the "
+                    "estimated noise its rules use; a named preset: divides alpha)");
   c->add_option("--truth", a->truth, "Ground-truth mesh: print error figures of input and result");
   c->add_option("--save-field", a->field,
                 "Write the edge field v (.txt: 'i j v' per edge; .ply: coloured edges; -: text to standard output)");

@@ -11,7 +11,9 @@
 #include "msmesh/geometry.h"
 #include "msmesh/memory.h"
 #include "msmesh/mesh.h"
+#include "msmesh/parameters.h"
 #include "msmesh/prepared_mesh.h"
+#include "msmesh/taubin.h"
 #include "msmesh/topology.h"
 #include "sub_mesh.h"
 #include "union_find.h"
@@ -87,6 +89,7 @@ void DenoiseOptions::validate() const {
   } else {
     normals.validate();
     vertices.validate();
+    check_parameter(find_parameter(denoise_parameters(), "prefilter")->info, prefilter_iterations);
   }
 }
 
@@ -169,7 +172,13 @@ DenoiseResult denoise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
   const PreparedMesh mesh(V, F, "denoise");
   NormalFilterOptions no = o.normals;
   no.reweight = (o.method == DenoiseMethod::NMSTV);
-  NormalFilterResult nr = filter_normals(mesh, no, {}, progress);
+  Eigen::MatrixXd normals0;  // empty: the input's face normals
+  if (o.prefilter_iterations > 0) {
+    TaubinOptions to;
+    to.iterations = o.prefilter_iterations;
+    normals0 = face_normals(taubin_smooth(mesh.positions(), mesh.faces(), to), mesh.faces());
+  }
+  NormalFilterResult nr = filter_normals(mesh, no, {}, progress, normals0);
   r.normals = std::move(nr.normals);
   r.v = std::move(nr.v);
   r.edges = std::move(nr.edges);

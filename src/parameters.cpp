@@ -251,6 +251,11 @@ const ParameterTable<DenoiseOptions>& denoise_parameters() {
          [](const O& o) { return static_cast<double>(o.vertices.max_iterations); },
          [](O& o, double x) { o.vertices.max_iterations = o.bilateral.vertex_iterations = static_cast<int>(x); }});
     append(t, bilateral_parameters(), &O::bilateral, {"vertex-iterations"});
+    t.push_back(field(integer("prefilter", "", closed(0, 1000),
+                              "Taubin passes on a copy of the vertices before the first normals N⁰ are taken "
+                              "(robust first normals under heavy noise; 0: the input's face normals, as the paper)",
+                              kNormals),
+                      &O::prefilter_iterations));
     t.push_back(shared_solver_tolerance<O>());
     return t;
   }();

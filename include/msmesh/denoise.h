@@ -25,6 +25,11 @@ struct DenoiseOptions {
   NormalFilterOptions normals;
   VertexUpdateOptions vertices;
   BilateralOptions bilateral;
+  /// Robust first normals (NMSTV/MSTV): Taubin λ|μ passes (taubin.h) on a copy of the vertices
+  /// before the input normals N⁰ are taken from it; the vertex update still starts from, and
+  /// stays close to, the input. 0: N⁰ are the input's face normals, as in the paper. The
+  /// noise-adaptive preset "auto" sets it from the noise estimate (presets.h).
+  int prefilter_iterations = 0;
   void validate() const;
 };
 

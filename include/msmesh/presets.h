@@ -11,14 +11,16 @@
 #include <vector>
 
 #include "msmesh/denoise.h"
+#include "msmesh/noise_estimate.h"
 #include "msmesh/normal_filter.h"
 #include "msmesh/vertex_update.h"
 
 namespace msmesh {
 
-/// The named parameter sets: "cad" (CAD parts and scans of them: sharp creases kept) and
-/// "smooth" (organic shapes: the edge field is effectively off). Besides these, "auto"
-/// (resolve_preset) picks one of them from the mesh.
+/// The named parameter sets: "cad" (CAD parts and scans of them: sharp creases kept),
+/// "smooth" (organic shapes: the edge field is effectively off) and "paper" (Algorithms 1 and 2
+/// as published, with the paper's §5.1 settings). Besides these, "auto" (resolve_preset, the
+/// default) sets the parameters from the mesh's own noise and shape.
 std::vector<std::string> preset_names();
 
 /// The default of `msmesh denoise --preset` and of Python's denoise(preset=...): "auto".
@@ -28,7 +30,13 @@ const char* default_preset();
 /// resolve_preset) and for unknown names, listing the valid ones.
 DenoiseOptions preset_options(const std::string& name);
 
-/// What the "auto" rule saw on a mesh, and what it picked.
+/// The noise-adaptive options of "auto" for a shape class ("cad" or "smooth") and a noise level
+/// σ (mean edge lengths, as NoiseEstimate::sigma_rms): the class's preset with α and the
+/// pre-filter following σ (docs/presets.md, "--preset auto"). Throws InvalidInput for an
+/// unknown class or a negative σ.
+DenoiseOptions adaptive_options(const std::string& shape_class, double sigma);
+
+/// What the shape rule saw on a mesh, and the class it picked.
 struct PresetChoice {
   std::string preset;         ///< "cad" or "smooth"
   double sharp_fraction = 0;  ///< fraction of edge length with dihedral > 30° after pre-smoothing
@@ -37,23 +45,34 @@ struct PresetChoice {
   std::string reason;         ///< one line: the figures and the thresholds that decided
 };
 
-/// The "auto" rule: picks "cad" or "smooth" for a mesh (#V by 3, #F by 3) from the mesh itself
-/// (docs/presets.md, "--preset auto").
+/// The shape rule: picks the class "cad" or "smooth" for a mesh (#V by 3, #F by 3) from the
+/// mesh itself (docs/presets.md, "--preset auto"). resolve_preset("auto") applies it to the
+/// pre-filtered mesh, so that heavy noise does not look like creases.
 PresetChoice choose_preset(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F);
+
+/// The range of resolve_preset's `strength`.
+constexpr double kMinStrength = 0.1, kMaxStrength = 10.0;
 
 /// A preset name resolved for one mesh.
 struct ResolvedPreset {
   std::string requested;   ///< what was asked for: "auto" or a preset name
-  std::string preset;      ///< the preset used: "cad" or "smooth"
+  std::string preset;      ///< the preset whose values were used: "cad", "smooth" or "paper"
   bool automatic = false;  ///< requested == "auto"
-  PresetChoice choice;     ///< what the auto rule saw (when automatic)
-  DenoiseOptions options;  ///< the preset's options
+  PresetChoice choice;     ///< what the shape rule saw (when automatic)
+  NoiseEstimate noise;     ///< the noise estimate (when automatic)
+  double strength = 1.0;   ///< how much to remove: 1 the default, larger smooths more
+  double sigma = 0;        ///< the noise level the rules used: strength × noise.sigma_rms (auto)
+  DenoiseOptions options;  ///< the options
   /// Why: "chosen automatically: ..." (auto) or "requested".
   std::string reason() const;
 };
 
-/// Resolves "auto" (from the mesh) or a preset name. Throws InvalidInput for unknown names.
-ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F);
+/// Resolves "auto" (from the mesh) or a preset name. `strength` in [kMinStrength, kMaxStrength]
+/// scales how much is removed: "auto" uses strength × the estimated noise in its rules; a named
+/// preset divides its α (the fidelity) by it. Throws InvalidInput for unknown names and a
+/// strength out of range.
+ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                              double strength = 1.0);
 
 /// Normal filter options of segmentation (SegmentOptions::normals): preset "cad"'s.
 NormalFilterOptions segment_normal_options();
