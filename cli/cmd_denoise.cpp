@@ -105,8 +105,8 @@ void run(const Args& a) {
     ev_out = evaluate(out.V, out.F, truth.V, truth.F);
   }
   if (!a.report.empty())
-    write_denoise_report(a.report, a.input, mesh, out.V, a.truth.empty() ? nullptr : &truth, a.method, preset.preset, o,
-                         r, ev_in, ev_out);
+    write_denoise_report(a.report, a.input, mesh, out.V, a.truth.empty() ? nullptr : &truth, a.method,
+                         preset.preset + (preset.automatic ? ", " + preset.reason() : ""), o, r, ev_in, ev_out);
   plan.commit();
 
   if (a.json) {

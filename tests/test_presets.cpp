@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 
 #include "msmesh/errors.h"
 #include "msmesh/inpaint.h"
@@ -41,12 +42,23 @@ TEST(Presets, StructDefaultsAreTheCadPreset) {
 
 TEST(Presets, NamesAndTheirOptionsAreValid) {
   const std::vector<std::string> names = preset_names();
-  ASSERT_EQ(names, (std::vector<std::string>{"cad", "smooth"}));
+  ASSERT_EQ(names, (std::vector<std::string>{"cad", "smooth", "paper"}));
   for (const std::string& name : names) EXPECT_NO_THROW(preset_options(name).validate()) << name;
   EXPECT_STREQ(default_preset(), "auto");
   // The presets differ where docs/presets.md says they do.
   EXPECT_NE(preset_options("cad").normals.beta, preset_options("smooth").normals.beta);
   EXPECT_NE(preset_options("cad").normals.rho, preset_options("smooth").normals.rho);
+  // paper: the published Algorithm 1 (projection after every N-step) with §5.1's r_p and ρ.
+  const DenoiseOptions paper = preset_options("paper");
+  EXPECT_TRUE(paper.normals.project_each_iteration);
+  EXPECT_EQ(paper.normals.penalty, 1.0);
+  EXPECT_EQ(paper.normals.rho, 0.9);
+  EXPECT_EQ(paper.normals.epsilon, 1e-3);
+  EXPECT_EQ(paper.normals.relaxation, 1.618);
+  EXPECT_EQ(paper.normals.max_iterations, 30);
+  EXPECT_EQ(paper.vertices.omega1, 1.0);
+  EXPECT_EQ(paper.vertices.max_iterations, 30);
+  EXPECT_EQ(paper.prefilter_iterations, 0);
 }
 
 TEST(Presets, AutoNeedsAMeshAndUnknownNamesListTheValidOnes) {
@@ -60,7 +72,7 @@ TEST(Presets, AutoNeedsAMeshAndUnknownNamesListTheValidOnes) {
     preset_options("sharp");
     FAIL() << "unknown preset accepted";
   } catch (const InvalidInput& e) {
-    EXPECT_NE(std::string(e.what()).find("auto, cad, smooth"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("auto, cad, smooth, paper"), std::string::npos) << e.what();
   }
   const Mesh m = test::grid(6, 0.1);
   EXPECT_THROW(resolve_preset("sharp", m.V, m.F), InvalidInput);
@@ -75,7 +87,10 @@ TEST(Presets, AutoChoosesFromTheMeshAndSaysWhy) {
   EXPECT_EQ(cad.choice.preset, "cad");
   EXPECT_NE(cad.reason().find("chosen automatically"), std::string::npos) << cad.reason();
   EXPECT_NE(cad.reason().find("crease fraction"), std::string::npos) << cad.reason();
-  expect_same_parameters(denoise_parameters(), cad.options, preset_options("cad"), "auto -> cad");
+  EXPECT_NE(cad.reason().find("noise sigma"), std::string::npos) << cad.reason();
+  // The options are the adaptive ones for the class and the estimated noise.
+  expect_same_parameters(denoise_parameters(), cad.options, adaptive_options("cad", cad.sigma), "auto -> cad");
+  EXPECT_EQ(cad.sigma, cad.noise.sigma_rms);
 
   const Mesh sphere = make_shape("sphere", 8);
   const PresetChoice c = choose_preset(sphere.V, sphere.F);
@@ -86,6 +101,51 @@ TEST(Presets, AutoChoosesFromTheMeshAndSaysWhy) {
   EXPECT_FALSE(asked.automatic);
   EXPECT_EQ(asked.preset, "smooth");
   EXPECT_EQ(asked.reason(), "requested");
+}
+
+TEST(Presets, AdaptiveOptionsFollowTheNoise) {
+  // Less fidelity and more pre-filtering as the noise grows; within the documented limits.
+  double last_alpha = 1e300;
+  int last_prefilter = -1;
+  for (const double sigma : {0.0, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 5.0}) {
+    for (const char* cls : {"cad", "smooth"}) {
+      const DenoiseOptions o = adaptive_options(cls, sigma);
+      EXPECT_NO_THROW(o.validate()) << cls << " " << sigma;
+      EXPECT_GE(o.normals.alpha, 1.5);
+      EXPECT_LE(o.normals.alpha, 5.0);
+      EXPECT_GE(o.prefilter_iterations, 0);
+      EXPECT_LE(o.prefilter_iterations, 5);
+      // Everything but α and the pre-filter is the class's preset.
+      DenoiseOptions p = preset_options(cls);
+      p.normals.alpha = o.normals.alpha;
+      p.prefilter_iterations = o.prefilter_iterations;
+      expect_same_parameters(denoise_parameters(), o, p, std::string(cls) + " at " + std::to_string(sigma));
+    }
+    const DenoiseOptions o = adaptive_options("cad", sigma);
+    EXPECT_LE(o.normals.alpha, last_alpha) << sigma;
+    EXPECT_GE(o.prefilter_iterations, last_prefilter) << sigma;
+    last_alpha = o.normals.alpha;
+    last_prefilter = o.prefilter_iterations;
+  }
+  EXPECT_EQ(adaptive_options("cad", 0.05).prefilter_iterations, 0);  // low noise: the input's own normals
+  EXPECT_GT(adaptive_options("cad", 0.6).prefilter_iterations, 0);
+  EXPECT_THROW(adaptive_options("organic", 0.3), InvalidInput);
+  EXPECT_THROW(adaptive_options("cad", -1), InvalidInput);
+}
+
+TEST(Presets, StrengthScalesWhatIsRemoved) {
+  const Mesh part = make_shape("fandisk", 8);
+  const ResolvedPreset one = resolve_preset("auto", part.V, part.F);
+  const ResolvedPreset more = resolve_preset("auto", part.V, part.F, 4.0);
+  EXPECT_DOUBLE_EQ(more.sigma, 4.0 * one.sigma);
+  EXPECT_LE(more.options.normals.alpha, one.options.normals.alpha);
+  EXPECT_NE(more.reason().find("strength 4.00"), std::string::npos) << more.reason();
+  const ResolvedPreset cad2 = resolve_preset("cad", part.V, part.F, 2.0);
+  EXPECT_DOUBLE_EQ(cad2.options.normals.alpha, preset_options("cad").normals.alpha / 2);
+  EXPECT_EQ(cad2.reason(), "requested, strength 2.00");
+  EXPECT_THROW(resolve_preset("auto", part.V, part.F, 0.0), InvalidInput);
+  EXPECT_THROW(resolve_preset("auto", part.V, part.F, 11.0), InvalidInput);
+  EXPECT_THROW(resolve_preset("cad", part.V, part.F, std::nan("")), InvalidInput);
 }
 
 TEST(Presets, AutoIsInvariantUnderScaleRotationAndTranslation) {

@@ -44,7 +44,8 @@ from . import _core
 __version__ = "0.1.0"
 
 __all__ = [
-    "denoise", "filter_normals", "update_vertices", "add_noise", "evaluate", "choose_preset",
+    "denoise", "filter_normals", "update_vertices", "add_noise", "evaluate", "choose_preset", "estimate_noise",
+    "taubin_smooth",
     "read_mesh", "write_mesh", "repair", "make_shape", "shape_names", "preset_names", "PARAMETERS",
     "set_threads", "threads",
     "Error", "InvalidInputError", "IoError", "SolverError", "Cancelled", "ProgressEvent",
@@ -142,11 +143,14 @@ def _apply_parameters(options, params, table, function, solvers=()):
         _core.set_parameter(options, name, float(value))
 
 
-def _resolve_preset(V, F, preset, report):
+def _resolve_preset(V, F, preset, report, strength=1.0):
     """DenoiseOptions of a preset name; 'auto' is chosen from the mesh by the library (what it
     saw and why recorded in report)."""
     _checks.choice(preset, "preset", _PRESETS)
-    r = _core.resolve_preset(preset, V, F)
+    strength = _checks.real(strength, "strength", minimum=_core.MIN_STRENGTH)
+    if strength > _core.MAX_STRENGTH:
+        raise InvalidInputError(f"strength: must be <= {_core.MAX_STRENGTH}, got {strength}")
+    r = _core.resolve_preset(preset, V, F, strength)
     report["preset_requested"] = preset
     report["preset"] = r["preset"]
     report["preset_reason"] = r["reason"]
@@ -154,7 +158,36 @@ def _resolve_preset(V, F, preset, report):
         report["auto_sharp_fraction"] = r["sharp_fraction"]
         report["auto_flat_fraction"] = r["flat_fraction"]
         report["auto_noise_level"] = r["noise_level"]
+        for key in ("noise_sigma", "noise_sigma_rms", "noise_outlier_fraction", "noise_level_used"):
+            report[key] = r[key]
+    report["strength"] = r["strength"]
     return r["options"]
+
+
+def estimate_noise(V, F):
+    """The noise of a mesh, from the mesh alone (include/msmesh/noise_estimate.h).
+
+    Returns a dict: sigma (robust standard deviation of the noise along the normals, in mean
+    edge lengths), sigma_rms (RMS of the same residuals; well above sigma under impulsive
+    noise), outlier_fraction (vertices beyond 4 sigma) and summary (one line). 'auto' sets its
+    parameters from sigma_rms (docs/presets.md).
+    """
+    V, F = _checks.mesh(V, F)
+    return _core.estimate_noise(V, F)
+
+
+def taubin_smooth(V, F, iterations=10, lambda_=0.5, mu=-0.53):
+    """Taubin's lambda|mu smoothing with uniform weights (no shrinkage); returns (#V, 3).
+
+    iterations: lambda|mu pairs (>= 0); lambda_ in (0, 1]; mu in [-1, 0) with |mu| > lambda_.
+    The pre-filter of 'auto' under heavy noise, and the smoothing Open3D's filter_smooth_taubin
+    does.
+    """
+    V, F = _checks.mesh(V, F)
+    iterations = _checks.integer(iterations, "iterations", minimum=0)
+    lambda_ = _checks.real(lambda_, "lambda_")
+    mu = _checks.real(mu, "mu")
+    return _core.taubin_smooth(V, F, iterations, lambda_, mu)
 
 
 def choose_preset(V, F):
@@ -164,12 +197,15 @@ def choose_preset(V, F):
     return _core.choose_preset(V, F)
 
 
-def denoise(V, F, preset=DEFAULT_PRESET, method="nmstv", progress=None, **params):
+def denoise(V, F, preset=DEFAULT_PRESET, method="nmstv", progress=None, strength=1.0, **params):
     """Denoises a mesh: normal filtering, then vertex updating (F is unchanged).
 
     V: (#V, 3) positions; F: (#F, 3) triangle indices.
-    preset: 'cad' (sharp features), 'smooth' (organic shapes, scans) or 'auto' (chosen from the
-        mesh, as `msmesh denoise --preset auto`).
+    preset: 'auto' (the default: parameters from the mesh's estimated noise and shape, as
+        `msmesh denoise`), 'cad' (sharp features), 'smooth' (organic shapes) or 'paper'
+        (Algorithms 1 and 2 with the paper's settings).
+    strength: how much to remove, in [0.1, 10]: 1 the default, larger smooths more ('auto'
+        scales the estimated noise its rules use; a named preset divides alpha by it).
     method: 'nmstv' (the paper), 'mstv' (all IRLA weights 1) or 'bilateral' (Zheng et al. 2011).
     progress: None or a callable(ProgressEvent) -> False to cancel.
     params: overrides of the preset, named like the CLI's options (PARAMETERS; `msmesh params`
@@ -185,7 +221,10 @@ def denoise(V, F, preset=DEFAULT_PRESET, method="nmstv", progress=None, **params
     _checks.choice(method, "method", tuple(_METHODS))
     progress = _checks.progress(progress)
     report = {}
-    options = _resolve_preset(V, F, preset, report)
+    if method == "bilateral" and strength != 1.0:
+        raise InvalidInputError("strength: needs method 'nmstv' or 'mstv' (bilateral has its own parameters)")
+    options = _resolve_preset(V, F, "cad" if method == "bilateral" and preset == "auto" else preset, report,
+                              strength)
     options.method = _METHODS[method]
     _apply_parameters(options, params, PARAMETERS, "denoise", solvers=("normals", "vertices"))
     result = _core.denoise(V, F, options, progress)

@@ -4,7 +4,9 @@
 
 #include "bindings.h"
 #include "msmesh/denoise.h"
+#include "msmesh/noise_estimate.h"
 #include "msmesh/presets.h"
+#include "msmesh/taubin.h"
 #include "msmesh/topology.h"
 
 namespace py = pybind11;
@@ -71,6 +73,25 @@ py::dict choose_preset_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& 
   d["noise_level"] = c.noise_level;
   d["reason"] = c.reason;
   return d;
+}
+
+py::dict estimate_noise_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
+  const NoiseEstimate e = run_without_gil(py::none(), [&](const ProgressCallback&) { return estimate_noise(V, F); });
+  py::dict d;
+  d["sigma"] = e.sigma;
+  d["sigma_rms"] = e.sigma_rms;
+  d["outlier_fraction"] = e.outlier_fraction;
+  d["summary"] = e.summary();
+  return d;
+}
+
+Eigen::MatrixXd taubin_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, int iterations, double lambda,
+                               double mu) {
+  TaubinOptions o;
+  o.iterations = iterations;
+  o.lambda = lambda;
+  o.mu = mu;
+  return run_without_gil(py::none(), [&](const ProgressCallback&) { return taubin_smooth(V, F, o); });
 }
 
 void set_threads_binding(int n) {
@@ -151,6 +172,9 @@ void bind_denoise(py::module_& m) {
   m.def("preset_names", &preset_names);
   m.def("preset_options", &preset_options, py::arg("name"));
   m.def("choose_preset", &choose_preset_binding, py::arg("V"), py::arg("F"));
+  m.def("estimate_noise", &estimate_noise_binding, py::arg("V"), py::arg("F"));
+  m.def("taubin_smooth", &taubin_binding, py::arg("V"), py::arg("F"), py::arg("iterations"), py::arg("lambda_"),
+        py::arg("mu"));
   m.def("denoise", &denoise_binding, py::arg("V"), py::arg("F"), py::arg("options"), py::arg("progress") = py::none());
   m.def("filter_normals", &filter_normals_binding, py::arg("V"), py::arg("F"), py::arg("options"), py::arg("normals0"),
         py::arg("progress") = py::none());

@@ -112,9 +112,10 @@ py::list table_binding(const std::string& kind) {
                      "'; valid: denoise, normal_filter, vertex_update, inpaint, segment");
 }
 
-py::dict resolve_preset_binding(const std::string& name, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
+py::dict resolve_preset_binding(const std::string& name, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                                double strength) {
   const ResolvedPreset r =
-      run_without_gil(py::none(), [&](const ProgressCallback&) { return resolve_preset(name, V, F); });
+      run_without_gil(py::none(), [&](const ProgressCallback&) { return resolve_preset(name, V, F, strength); });
   py::dict d;
   d["requested"] = r.requested;
   d["preset"] = r.preset;
@@ -125,7 +126,12 @@ py::dict resolve_preset_binding(const std::string& name, const Eigen::MatrixXd& 
     d["sharp_fraction"] = r.choice.sharp_fraction;
     d["flat_fraction"] = r.choice.flat_fraction;
     d["noise_level"] = r.choice.noise_level;
+    d["noise_sigma"] = r.noise.sigma;
+    d["noise_sigma_rms"] = r.noise.sigma_rms;
+    d["noise_outlier_fraction"] = r.noise.outlier_fraction;
+    d["noise_level_used"] = r.sigma;
   }
+  d["strength"] = r.strength;
   return d;
 }
 
@@ -134,7 +140,10 @@ py::dict resolve_preset_binding(const std::string& name, const Eigen::MatrixXd& 
 void bind_parameters(py::module_& m) {
   m.def("parameter_table", &table_binding, py::arg("kind"));
   m.def("default_preset", &default_preset);
-  m.def("resolve_preset", &resolve_preset_binding, py::arg("name"), py::arg("V"), py::arg("F"));
+  m.def("resolve_preset", &resolve_preset_binding, py::arg("name"), py::arg("V"), py::arg("F"),
+        py::arg("strength") = 1.0);
+  m.attr("MIN_STRENGTH") = kMinStrength;
+  m.attr("MAX_STRENGTH") = kMaxStrength;
   bind_table(m, denoise_parameters());
   bind_table(m, normal_filter_parameters());
   bind_table(m, vertex_update_parameters());

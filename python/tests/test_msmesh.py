@@ -55,6 +55,8 @@ CLI_CASES = [
     ("smooth", "mstv", {"rho": 0.5, "normal_iterations": 12, "vertex_iterations": 8, "omega3": 0.05, "nu": 1.2}),
     ("auto", "nmstv", {"alpha": 3.0, "beta": 0.05, "v0": 0.5}),
     ("cad", "bilateral", {"sigma_r": 0.3, "bilateral_iterations": 5, "vertex_iterations": 7}),
+    ("paper", "nmstv", {"prefilter": 2}),
+    ("auto", "nmstv", {"strength": 2.5}),
 ]
 
 
@@ -80,9 +82,30 @@ def test_denoise_equals_cli(tmp_path, noisy_fandisk, preset, method, params):
     np.testing.assert_array_equal(F_cli, F)
     assert_close_relative(V_py, V_cli)
     assert report["method"] == method
-    assert report["preset"] in ("cad", "smooth")
+    assert report["preset"] in ("cad", "smooth", "paper")
     if preset != "auto":
         assert report["preset"] == preset
+
+
+def test_noise_estimate_and_strength(noisy_fandisk):
+    V, F, V_truth = noisy_fandisk
+    e = msmesh.estimate_noise(V, F)  # seeded sigma 0.2 along the normals
+    assert 0.14 < e["sigma"] < 0.3 and e["sigma_rms"] >= e["sigma"] * 0.9
+    assert "noise sigma" in e["summary"]
+    _, r = msmesh.denoise(V, F)
+    assert r["noise_sigma_rms"] == pytest.approx(e["sigma_rms"]) and r["strength"] == 1.0
+    assert "noise sigma" in r["preset_reason"]
+    _, r2 = msmesh.denoise(V, F, strength=3.0)
+    assert r2["noise_level_used"] == pytest.approx(3.0 * r["noise_level_used"])
+    assert r2["parameters"]["alpha"] <= r["parameters"]["alpha"]
+    for bad in (0.0, 11.0, float("nan"), "2"):
+        with pytest.raises(msmesh.InvalidInputError, match="strength"):
+            msmesh.denoise(V, F, strength=bad)
+    with pytest.raises(msmesh.InvalidInputError, match="strength"):
+        msmesh.denoise(V, F, method="bilateral", strength=2.0)
+    S = msmesh.taubin_smooth(V, F, iterations=3)
+    assert S.shape == V.shape and np.isfinite(S).all()
+    np.testing.assert_array_equal(msmesh.taubin_smooth(V, F, iterations=0), V)
 
 
 def test_denoise_report(noisy_fandisk):

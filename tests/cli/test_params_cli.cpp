@@ -46,7 +46,7 @@ TEST(ParamsCli, HelpShowsTheDefaultsTheCodeUses) {
   std::vector<std::pair<std::string, DenoiseOptions>> presets;
   for (const std::string& name : preset_names()) presets.emplace_back(name, preset_options(name));
   expect_help_shows(denoise.out, denoise_parameters(), presets, "denoise");
-  EXPECT_NE(denoise.out.find("--preset TEXT:{auto,cad,smooth}=auto"), std::string::npos) << denoise.out;
+  EXPECT_NE(denoise.out.find("--preset TEXT:{auto,cad,smooth,paper}=auto"), std::string::npos) << denoise.out;
 
   const auto inpaint = test::run_cli("inpaint --help");
   ASSERT_EQ(inpaint.status, 0) << inpaint.out;
@@ -79,8 +79,8 @@ TEST(ParamsCli, ParamsPrintsAPresetAndAutoForAMesh) {
   ASSERT_EQ(test::run_cli("shape fandisk --resolution 8 -q -o " + mesh).status, 0);
   const auto automatic = test::run_cli("params " + mesh);
   ASSERT_EQ(automatic.status, 0) << automatic.out;
-  EXPECT_NE(automatic.out.find("preset cad, chosen automatically (crease fraction"), std::string::npos)
-      << automatic.out;
+  EXPECT_NE(automatic.out.find("preset cad, chosen automatically (noise sigma"), std::string::npos) << automatic.out;
+  EXPECT_NE(automatic.out.find("crease fraction"), std::string::npos) << automatic.out;
 
   const auto no_mesh = test::run_cli("params");
   EXPECT_EQ(no_mesh.status, 2) << no_mesh.out;
@@ -137,4 +137,31 @@ TEST(ParamsCli, QuietMeansTheSameOnEverySubcommand) {
     EXPECT_EQ(run.status, 0) << args << ": " << run.out;
     EXPECT_EQ(run.out, "") << args;
   }
+}
+
+TEST(ParamsCli, DenoiseSaysWhatItEstimatedAndTakesAStrength) {
+  const auto dir = test::temp_folder("strength_cli");
+  const std::string mesh = (dir / "part.obj").string(), out = (dir / "out.obj").string();
+  ASSERT_EQ(test::run_cli("shape fandisk -o " + mesh + " --resolution 8 -q").status, 0);
+  const auto noisy = test::run_cli("noise " + mesh + " -o " + mesh + ".noisy.obj --sigma 0.3 --seed 2 -q");
+  ASSERT_EQ(noisy.status, 0) << noisy.out;
+  const auto run = test::run_cli("denoise " + mesh + ".noisy.obj -o " + out + " --json");
+  ASSERT_EQ(run.status, 0) << run.out;
+  for (const char* key :
+       {"\"noise_sigma\":", "\"noise_sigma_rms\":", "\"noise_level_used\":", "\"strength\":1", "\"prefilter\":"})
+    EXPECT_NE(run.out.find(key), std::string::npos) << key << "\n" << run.out;
+  const auto text = test::run_cli("denoise " + mesh + ".noisy.obj -o " + out + " --strength 2");
+  ASSERT_EQ(text.status, 0) << text.out;
+  EXPECT_NE(text.out.find("strength 2.00"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("noise sigma"), std::string::npos) << text.out;
+  // Out of range, and with the bilateral baseline: usage errors, nothing written.
+  const std::string other = (dir / "other.obj").string();
+  EXPECT_EQ(test::run_cli("denoise " + mesh + " -o " + other + " --strength 0").status, 2);
+  EXPECT_EQ(test::run_cli("denoise " + mesh + " -o " + other + " --strength 11").status, 2);
+  EXPECT_EQ(test::run_cli("denoise " + mesh + " -o " + other + " --strength 2 --method bilateral").status, 2);
+  EXPECT_FALSE(std::filesystem::exists(other));
+  const auto paper = test::run_cli("params --preset paper --json");
+  ASSERT_EQ(paper.status, 0) << paper.out;
+  EXPECT_NE(paper.out.find("\"project_each_iteration\":true"), std::string::npos) << paper.out;
+  EXPECT_NE(paper.out.find("\"penalty\":1"), std::string::npos) << paper.out;
 }
