@@ -67,10 +67,9 @@ W, _ = msmesh.read_mesh('denoised.obj')
 assert abs(V2 - W).max() < 1e-5 * abs(W).max(), abs(V2 - W).max()
 print('msmesh.denoise from Python: preset', report['preset'], '- same as the program')"
 # The same exit statuses: 2 a usage error, 1 a failed work.
+# shellcheck disable=SC2086  # $args: the words of one command line
 for args in "nosuchcommand" "denoise missing.obj -o out.obj"; do
-  # shellcheck disable=SC2086
   a=0; msmesh $args 2>/dev/null || a=$?
-  # shellcheck disable=SC2086
   b=0; "$V/bin/python" -m msmesh $args 2>/dev/null || b=$?
   echo "msmesh $args: exit $a; python -m msmesh: exit $b"
   [ "$a" = "$b" ] && [ "$a" != 0 ] || fail "exit statuses of 'msmesh $args' differ or are 0"
