@@ -91,7 +91,7 @@ class CMakeBuild(build_ext):
 
         _say(f"configuring in {build_dir}")
         subprocess.check_call(configure)
-        _say(f"building the module and the program with {jobs} jobs (a few minutes from scratch)")
+        _say(f"building the module and the program with {jobs} jobs (several minutes from scratch)")
         subprocess.check_call([cmake, "--build", str(build_dir), "--target", "_core", "msmesh", "-j", jobs])
 
         module = build_dir / "python" / "msmesh" / ("_core" + sysconfig.get_config_var("EXT_SUFFIX"))
