@@ -134,7 +134,7 @@ CompareSheet compare_sheet(const std::vector<ComparePanel>& panels, const Eigen:
       sheet.scale_note = noisy_saturates ? "scale from the results; the noisy input saturates"
                                          : "scale from the results (the noisy input left out)";
     else
-      sheet.scale_note = "scale from all panels";
+      sheet.scale_note = "scale from all panels with errors";
   }
 
   const int scale = ro.width >= 300 ? 2 : 1;
