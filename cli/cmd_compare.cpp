@@ -23,7 +23,8 @@ namespace {
 
 struct Args {
   std::vector<std::string> inputs;
-  std::string output, truth, captions, color = "auto", size = "400x400", title, noisy = "auto";
+  std::string output, truth, captions, color = "auto", title, noisy = "auto";
+  std::string size = std::to_string(kComparePanelSize) + "x" + std::to_string(kComparePanelSize);
   ViewArgs view;
   bool quiet = false;
   double feature_angle = 0, error_max = 0;

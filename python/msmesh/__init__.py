@@ -553,7 +553,7 @@ def compare(meshes: Sequence[Tuple[ArrayLike, ...]], path: Optional[PathLike] = 
         A line above the panels.
     **params
         The render parameters of each panel (RENDER_PARAMETERS); width and height default to
-        400, as `msmesh compare --size 400x400`.
+        400 (kComparePanelSize of compare_sheet.h), as `msmesh compare --size`.
 
     Returns
     -------
@@ -597,7 +597,9 @@ def compare(meshes: Sequence[Tuple[ArrayLike, ...]], path: Optional[PathLike] = 
     if not isinstance(title, str):
         raise InvalidInputError(f"title: must be a str, got {type(title).__name__}")
     o.title = title
-    o.render = _render_options(view, up, perspective, params, "compare", {"width": 400, "height": 400})
+    panel = _core.parameters(_core.CompareOptions().render)  # the panel size of `msmesh compare --size`
+    o.render = _render_options(view, up, perspective, params, "compare",
+                               {"width": panel["width"], "height": panel["height"]})
     out_path = None if path is None else _checks.path(path)
     report = _core.compare(panels, Vt, Ft, o)
     image = report.pop("image")

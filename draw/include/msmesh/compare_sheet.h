@@ -33,14 +33,25 @@ std::vector<std::string> sheet_color_names();
 /// The colouring of a name of sheet_color_names(); throws InvalidInput otherwise.
 SheetColor sheet_color_from_name(const std::string& name);
 
+/// RenderOptions of a size × size picture, the other options at their defaults.
+inline RenderOptions square_render_options(int size) {
+  RenderOptions o;
+  o.width = o.height = size;
+  return o;
+}
+
 /// CompareOptions::noisy_panel: chosen from the errors; no panel is the noisy input.
 constexpr int kNoisyPanelAuto = -1;
 constexpr int kNoNoisyPanel = -2;
 
+/// The size of each panel by default (pixels): `msmesh compare --size` and msmesh.compare().
+constexpr int kComparePanelSize = 400;
+
 struct CompareOptions {
-  /// Each panel's picture (size, view, up axis, camera, ...). Empty frame_points: all the
-  /// panels' vertices, so that every panel shows the same view at the same scale.
-  RenderOptions render;
+  /// Each panel's picture (size, view, up axis, camera, ...); kComparePanelSize square by
+  /// default. Empty frame_points: all the panels' vertices, so that every panel shows the same
+  /// view at the same scale.
+  RenderOptions render = square_render_options(kComparePanelSize);
   SheetColor color = SheetColor::Auto;
   double feature_angle = 0;  ///< draw edges sharper than this (degrees, [0, 180)) dark; 0: off
   double error_max = 0;      ///< top of the error scale in degrees ([0, 180]); 0: from the results
