@@ -1,5 +1,6 @@
-// msmesh info: counts, defects and size of a mesh, as read (after triangulation and dropping
-// degenerate faces).
+// msmesh info: counts, defects, size, area, volume, watertightness and genus of a mesh, as read
+// (after triangulation and dropping degenerate faces). The figures: msmesh/mesh_statistics.h,
+// the same as msmesh.info() in Python.
 #include <algorithm>
 #include <iostream>
 #include <memory>
@@ -9,6 +10,7 @@
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/io.h"
+#include "msmesh/mesh_statistics.h"
 #include "msmesh/topology.h"
 
 namespace msmesh::cli {
@@ -22,6 +24,52 @@ struct Args {
 /// How many of the largest boundary loops to list.
 constexpr std::size_t kLargestLoops = 5;
 
+/// How many components `info` lists one by one (text and JSON).
+constexpr std::size_t kListedComponents = 20;
+
+/// The volume line: the sum over closed components, or "open".
+std::string volume_text(const MeshStatistics& st) {
+  if (st.closed_components == 0) return "open (no closed component)";
+  std::string t = fmt(st.volume, 6);
+  if (st.closed_components < st.components)
+    t += " (" + std::to_string(st.closed_components) + " closed of " + std::to_string(st.components) +
+         " components; the open ones have none)";
+  return t;
+}
+
+/// The genus line: the number, with the boundary loops it was counted with; "-" where undefined.
+std::string genus_text(const MeshStatistics& st) {
+  if (st.genus < 0) return "- (not defined: a component is non-manifold or non-orientable)";
+  std::string t = std::to_string(st.genus);
+  if (st.boundary_loops > 0)
+    t += " (surface with " + std::to_string(st.boundary_loops) +
+         (st.boundary_loops == 1 ? " boundary loop)" : " boundary loops)");
+  return t;
+}
+
+Json component_json(const ComponentStatistics& c) {
+  Json j;
+  j.add("faces", static_cast<long long>(c.faces))
+      .add("vertices", static_cast<long long>(c.vertices))
+      .add("edges", static_cast<long long>(c.edges))
+      .add("area", c.area)
+      .add("closed", c.closed)
+      .add("manifold", c.manifold)
+      .add("orientable", c.orientable)
+      .add("consistently_oriented", c.consistently_oriented);
+  if (c.closed && c.orientable)
+    j.add("volume", c.volume);
+  else
+    j.raw("volume", "null");
+  j.add("euler_characteristic", static_cast<long long>(c.euler_characteristic))
+      .add("boundary_loops", static_cast<long long>(c.boundary_loops));
+  if (c.genus >= 0)
+    j.add("genus", static_cast<long long>(c.genus));
+  else
+    j.raw("genus", "null");
+  return j;
+}
+
 std::string join_vector(const Eigen::RowVector3d& v) { return fmt(v(0), 6) + " " + fmt(v(1), 6) + " " + fmt(v(2), 6); }
 
 void run(const Args& a) {
@@ -33,6 +81,7 @@ void run(const Args& a) {
   const double mean_edge = mean_edge_length(mesh.V, mesh.F);
   const Eigen::RowVector3d bb_min = mesh.V.colwise().minCoeff(), bb_max = mesh.V.colwise().maxCoeff();
   const double diagonal = (bb_max - bb_min).norm();
+  const MeshStatistics st = mesh_statistics(mesh.V, mesh.F);
 
   std::vector<std::size_t> loop_sizes;
   for (const auto& loop : s.boundary_loops) loop_sizes.push_back(loop.size());
@@ -65,7 +114,23 @@ void run(const Args& a) {
         .add("vertex_colors", mesh.vertex_colors.size() > 0)
         .add("texture_coordinates", mesh.uv.size() > 0)
         .add("texture_coordinates_with_seams", notes.uv_dropped)
-        .add("vertex_normals", notes.had_normals);
+        .add("vertex_normals", notes.had_normals)
+        .add("area", st.area);
+    if (st.closed_components > 0)
+      j.add("volume", st.volume);
+    else
+      j.raw("volume", "null");
+    j.add("closed_components", static_cast<long long>(st.closed_components))
+        .add("watertight", st.watertight)
+        .add("euler_characteristic", static_cast<long long>(st.euler_characteristic));
+    if (st.genus >= 0)
+      j.add("genus", static_cast<long long>(st.genus));
+    else
+      j.raw("genus", "null");
+    std::vector<Json> parts;
+    for (std::size_t i = 0; i < std::min(st.per_component.size(), kListedComponents); ++i)
+      parts.push_back(component_json(st.per_component[i]));
+    j.add("component_details", parts);
     std::cout << j.str() << "\n";
     return;
   }
@@ -88,6 +153,11 @@ void run(const Args& a) {
             << "  unreferenced vertices:         " << s.unreferenced_vertices << "\n"
             << "  inconsistently oriented edges: " << s.inconsistently_oriented_edges << "\n"
             << "  connected components:          " << s.components << "\n"
+            << "  surface area:                  " << fmt(st.area, 6) << "\n"
+            << "  volume:                        " << volume_text(st) << "\n"
+            << "  watertight:                    " << (st.watertight ? "yes" : "no") << "\n"
+            << "  Euler characteristic:          " << st.euler_characteristic << "\n"
+            << "  genus:                         " << genus_text(st) << "\n"
             << "  mean edge length:              " << fmt(mean_edge, 6) << "\n"
             << "  bounding box min:              " << join_vector(bb_min) << "\n"
             << "  bounding box max:              " << join_vector(bb_max) << "\n"
@@ -98,11 +168,25 @@ void run(const Args& a) {
   if (notes.uv_dropped)
     std::cout << "  texture coordinates:           with seams (per corner): not read, not carried over\n";
   if (notes.had_normals) std::cout << "  vertex normals:                yes (recomputed when vertices move)\n";
+  if (st.per_component.size() > 1) {
+    std::cout << "  components (in the order of their first face; "
+              << std::min(st.per_component.size(), kListedComponents) << " of " << st.per_component.size() << "):\n";
+    for (std::size_t i = 0; i < std::min(st.per_component.size(), kListedComponents); ++i) {
+      const ComponentStatistics& c = st.per_component[i];
+      std::cout << "    " << i << ": " << c.faces << " faces, area " << fmt(c.area, 6) << ", "
+                << (c.closed
+                        ? (c.orientable ? "closed, volume " + fmt(c.volume, 6) : std::string("closed, non-orientable"))
+                        : std::to_string(c.boundary_loops) + " boundary loops")
+                << ", genus " << (c.genus >= 0 ? std::to_string(c.genus) : std::string("-")) << "\n";
+    }
+  }
 }
 
 const Registrar kRegistration("info", 10, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
-  CLI::App* c = app.add_subcommand("info", "Counts, defects (boundaries, non-manifold parts) and size of a mesh");
+  CLI::App* c = app.add_subcommand(
+      "info",
+      "Counts, defects (boundaries, non-manifold parts), size, area, volume, watertightness and genus of a mesh");
   c->add_option("input", a->input, "Mesh file (obj, off, ply, stl)")->required();
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
   add_quiet_flag(c, a->quiet);

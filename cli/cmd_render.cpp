@@ -11,14 +11,15 @@
 #include "msmesh/render.h"
 #include "number_option.h"
 #include "output_plan.h"
-#include "run_reports.h"
+#include "view_options.h"
 
 namespace msmesh::cli {
 namespace {
 
 struct Args {
-  std::string input, output, color = "none", truth, field, labels, view = "iso", size = "800x600";
-  bool perspective = false, quiet = false;
+  std::string input, output, color = "auto", truth, field, labels, size = "800x600";
+  ViewArgs view;
+  bool quiet = false;
   double feature_angle = 0, error_max = 0, line_width = 0;
   int supersample = 2;
 };
@@ -26,8 +27,7 @@ struct Args {
 void run(const Args& a) {
   RenderOptions ro;
   std::tie(ro.width, ro.height) = parse_size(a.size);
-  ro.view = view_from_name(a.view);
-  ro.projection = a.perspective ? Projection::Perspective : Projection::Orthographic;
+  apply_view(a.view, ro);
   ro.supersample = a.supersample;
   // Field and label lines carry the information: thicker than feature edges by default.
   ro.line_width = a.line_width > 0 ? a.line_width : (a.color == "field" || a.color == "labels" ? 2.5 : 1.5);
@@ -43,8 +43,15 @@ void run(const Args& a) {
   plan.begin();
   const Mesh mesh = read_mesh(a.input);
 
+  // auto: the file's own colours when it has them, else grey.
+  std::string color = a.color;
+  if (color == "auto") color = mesh.vertex_colors.size() ? "file" : "none";
   Coloring c;
-  if (a.color == "error") {
+  if (color == "file") {
+    if (mesh.vertex_colors.size() == 0)
+      throw InvalidInput("render: --color file: '" + a.input + "' has no vertex colours");
+    c = vertex_coloring(mesh.vertex_colors, mesh.V.rows());
+  } else if (a.color == "error") {
     const Mesh truth = read_mesh(a.truth);
     const NormalErrors e = normal_errors(mesh.V, mesh.F, truth.V, truth.F);
     c = error_coloring(e.angle_rad * (180.0 / M_PI), a.error_max);
@@ -62,7 +69,7 @@ void run(const Args& a) {
   plan.commit();
   if (!a.quiet) {
     std::cout << "rendered " << a.input << " -> " << a.output << " (" << image.width << "x" << image.height << ", view "
-              << a.view << (a.perspective ? ", perspective" : "") << ", colour " << a.color;
+              << describe_view(a.view) << ", colour " << color;
     if (!c.summary.empty()) std::cout << ": " << c.summary;
     std::cout << ")\n";
   }
@@ -74,18 +81,16 @@ const Registrar kRegistration("render", 90, [](CLI::App& app) {
   c->add_option("input", a->input, "Mesh to render (obj, off, ply, stl)")->required();
   c->add_option("-o,--output", a->output, "Output .png (- for standard output)")->required();
   c->add_option("--color", a->color,
-                "none (grey), field (edge field v as coloured edges, --field), error (angle to --truth per face), "
+                "auto (the file's vertex colours when it has them, else none), none (grey), file (the file's vertex "
+                "colours), field (edge field v as coloured edges, --field), error (angle to --truth per face), "
                 "labels (one colour per segment, --labels)")
-      ->check(CLI::IsMember({"none", "field", "error", "labels"}))
+      ->check(CLI::IsMember({"auto", "none", "file", "field", "error", "labels"}))
       ->capture_default_str();
   c->add_option("--truth", a->truth, "Ground truth (same faces) for --color error");
   c->add_option("--field", a->field, "Edge field from denoise --save-field (.txt 'i j v' or .ply) for --color field");
   c->add_option("--labels", a->labels, "One label per face (segment --labels) for --color labels");
-  c->add_option("--view", a->view, "iso, front, back, left, right, top or bottom (+y is up)")
-      ->check(CLI::IsMember(view_names()))
-      ->capture_default_str();
+  add_view_options(c, a->view);
   add_size_option(c, a->size, "Picture size WxH in pixels (a colour bar adds a strip below)");
-  c->add_flag("--perspective", a->perspective, "Perspective camera (default orthographic)");
   add_feature_edges_option(c, a->feature_angle,
                            "Draw edges sharper than this dihedral angle as thin dark lines (0: off)");
   add_error_max_option(c, a->error_max, "Top of the error colour scale (0: 98th percentile, rounded up)");

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "msmesh/color_map.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
 
@@ -18,12 +19,6 @@ inline std::uint64_t edge_key(int a, int b) {
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
 }
 }  // namespace
-
-Eigen::Vector3d field_color(double x) {
-  x = std::clamp(x, 0.0, 1.0);
-  const Eigen::Vector3d a(0.45, 0.0, 0.05), b(1.0, 0.8, 0.1), c(0.85, 0.85, 0.85);
-  return x < 0.5 ? Eigen::Vector3d(a + (b - a) * (x / 0.5)) : Eigen::Vector3d(b + (c - b) * ((x - 0.5) / 0.5));
-}
 
 void write_edge_field(const std::string& path, const Eigen::MatrixXd& V, const Eigen::MatrixXi& edges,
                       const Eigen::VectorXd& v) {

@@ -13,9 +13,6 @@ namespace msmesh::cli {
 void write_edge_field(const std::string& path, const Eigen::MatrixXd& V, const Eigen::MatrixXi& edges,
                       const Eigen::VectorXd& v);
 
-/// Colour map for a value in [0,1]: dark red (0, features) through yellow to light grey (1).
-Eigen::Vector3d field_color(double x);
-
 /// Reads an edge field written by `msmesh denoise --save-field`: the text format (one edge a
 /// line, "i j v"; '#' starts a comment) or the ascii PLY (vertices, then "i j v r g b" edges).
 /// Returns #E values in the edge order of `topo`; every edge of `topo` must be listed.

@@ -8,8 +8,8 @@
 #include "msmesh/inpaint.h"
 #include "msmesh/mesh.h"
 #include "msmesh/metrics.h"
+#include "msmesh/report_page.h"
 #include "msmesh/segment.h"
-#include "report_page.h"
 
 namespace msmesh::cli {
 

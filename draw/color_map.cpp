@@ -19,6 +19,12 @@ Eigen::Vector3d heat_color(double x) {
   return c;
 }
 
+Eigen::Vector3d field_color(double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  const Eigen::Vector3d a(0.45, 0.0, 0.05), b(1.0, 0.8, 0.1), c(0.85, 0.85, 0.85);
+  return x < 0.5 ? Eigen::Vector3d(a + (b - a) * (x / 0.5)) : Eigen::Vector3d(b + (c - b) * ((x - 0.5) / 0.5));
+}
+
 Eigen::Vector3d label_color(int label) {
   // Distinct colours: hues stepped by the golden ratio, so neighbouring labels differ a lot.
   // Used for pictures, reports and segment's .ply output alike.

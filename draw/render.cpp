@@ -35,6 +35,21 @@ View view_from_name(const std::string& name) {
   throw InvalidInput("unknown view '" + name + "'; valid: " + list);
 }
 
+std::vector<std::string> up_axis_names() { return {"x", "-x", "y", "-y", "z", "-z"}; }
+
+UpAxis up_axis_from_name(const std::string& name) {
+  static const UpAxis axes[] = {UpAxis::PosX, UpAxis::NegX, UpAxis::PosY, UpAxis::NegY, UpAxis::PosZ, UpAxis::NegZ};
+  const std::vector<std::string> names = up_axis_names();
+  const std::string n = !name.empty() && name[0] == '+' ? name.substr(1) : name;
+  for (size_t i = 0; i < names.size(); ++i)
+    if (names[i] == n) return axes[i];
+  std::string list;
+  for (const auto& a : names) list += (list.empty() ? "" : ", ") + a;
+  throw InvalidInput("unknown up axis '" + name + "'; valid: " + list);
+}
+
+std::string up_axis_name(UpAxis axis) { return up_axis_names()[static_cast<size_t>(axis)]; }
+
 const ParameterTable<RenderOptions>& render_parameters() {
   using O = RenderOptions;
   using T = ParameterType;
@@ -51,6 +66,18 @@ const ParameterTable<RenderOptions>& render_parameters() {
       bind_parameter(ParameterInfo{"diffuse", "", "", T::Real, {0}, "diffuse shade", g}, &O::diffuse),
       bind_parameter(ParameterInfo{"line-width", "", "pixels", T::Real, {0, 20, true, false}, "width of edge lines", g},
                      &O::line_width),
+      bind_parameter(
+          ParameterInfo{
+              "azimuth", "", "degrees", T::Real, {-360, 360}, "camera turn about the up axis from the named view", g},
+          &O::azimuth_deg),
+      bind_parameter(ParameterInfo{"elevation",
+                                   "",
+                                   "degrees",
+                                   T::Real,
+                                   {-90, 90},
+                                   "camera raised towards the up axis from the named view",
+                                   g},
+                     &O::elevation_deg),
   };
   return t;
 }
@@ -75,7 +102,8 @@ struct CameraFrame {
   Eigen::Vector3d right, up, back;
 };
 
-CameraFrame camera_frame(View view) {
+/// The camera frame of a named view in the +y-up frame of View.
+CameraFrame view_frame(View view) {
   CameraFrame c;
   switch (view) {
     case View::Front:
@@ -111,6 +139,56 @@ CameraFrame camera_frame(View view) {
   return c;
 }
 
+/// The world directions of the x, y (up) and z axes of View's frame, as matrix columns: a
+/// rotation (right-handed, determinant 1), see UpAxis.
+Eigen::Matrix3d up_axis_frame(UpAxis up) {
+  Eigen::Vector3d x = Eigen::Vector3d::UnitX(), y = Eigen::Vector3d::UnitY();
+  switch (up) {
+    case UpAxis::PosY:
+      x = {1, 0, 0}, y = {0, 1, 0};
+      break;
+    case UpAxis::NegY:
+      x = {1, 0, 0}, y = {0, -1, 0};
+      break;
+    case UpAxis::PosZ:
+      x = {1, 0, 0}, y = {0, 0, 1};
+      break;
+    case UpAxis::NegZ:
+      x = {1, 0, 0}, y = {0, 0, -1};
+      break;
+    case UpAxis::PosX:
+      x = {0, -1, 0}, y = {1, 0, 0};
+      break;
+    case UpAxis::NegX:
+      x = {0, 1, 0}, y = {-1, 0, 0};
+      break;
+  }
+  Eigen::Matrix3d m;
+  m << x, y, x.cross(y);
+  return m;
+}
+
+/// The camera frame of the options in world coordinates: the named view, turned by azimuth
+/// about the view frame's up axis and raised by elevation about the camera's right axis, then
+/// carried to the world by the up axis.
+CameraFrame camera_frame(const RenderOptions& o) {
+  CameraFrame c = view_frame(o.view);
+  const double deg = M_PI / 180.0;
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(o.azimuth_deg * deg, Eigen::Vector3d::UnitY()).toRotationMatrix();
+  c.right = turn * c.right;
+  c.up = turn * c.up;
+  c.back = turn * c.back;
+  // A positive rotation about `right` moves `back` away from `up`: raise by −elevation.
+  const Eigen::Matrix3d raise = Eigen::AngleAxisd(-o.elevation_deg * deg, c.right).toRotationMatrix();
+  c.up = raise * c.up;
+  c.back = raise * c.back;
+  const Eigen::Matrix3d world = up_axis_frame(o.up);
+  c.right = world * c.right;
+  c.up = world * c.up;
+  c.back = world * c.back;
+  return c;
+}
+
 /// Maps world points to supersampled screen coordinates (x right, y down, in samples) and a
 /// depth key q that grows towards the viewer and is affine in screen space (the camera z for
 /// the orthographic camera, 1/distance for the perspective one), so it interpolates linearly.
@@ -141,7 +219,7 @@ struct Projector {
 /// projections, so the framing is tight whatever the view.
 Projector make_projector(const Eigen::MatrixXd& P, const RenderOptions& o) {
   Projector p;
-  p.frame = camera_frame(o.view);
+  p.frame = camera_frame(o);
   p.perspective = o.projection == Projection::Perspective;
   const Eigen::Vector3d lo = P.colwise().minCoeff().transpose(), hi = P.colwise().maxCoeff().transpose();
   p.center = 0.5 * (lo + hi);
@@ -178,10 +256,17 @@ inline std::uint64_t edge_key(int a, int b) {
 // ---- the steps of render_mesh ----
 
 /// Throws InvalidInput when the style's arrays do not fit a mesh of nf faces.
-void check_style(const MeshStyle& style, Eigen::Index nf) {
+void check_style(const MeshStyle& style, Eigen::Index nf, Eigen::Index nv) {
   if (style.face_colors.size() != 0 && (style.face_colors.rows() != nf || style.face_colors.cols() != 3))
     throw InvalidInput("render: face_colors is " + std::to_string(style.face_colors.rows()) + "x" +
                        std::to_string(style.face_colors.cols()) + ", expected " + std::to_string(nf) + "x3");
+  if (style.vertex_colors.size() != 0) {
+    if (style.face_colors.size() != 0) throw InvalidInput("render: give face_colors or vertex_colors, not both");
+    if (style.vertex_colors.rows() != nv || style.vertex_colors.cols() != 3)
+      throw InvalidInput("render: vertex_colors is " + std::to_string(style.vertex_colors.rows()) + "x" +
+                         std::to_string(style.vertex_colors.cols()) + ", expected " + std::to_string(nv) + "x3");
+    if (!style.vertex_colors.allFinite()) throw InvalidInput("render: vertex_colors must be finite");
+  }
   if (style.lines.size() != 0 && style.lines.cols() != 2)
     throw InvalidInput("render: lines must have 2 columns (vertex pairs)");
   const Eigen::Index nl = style.lines.rows();
@@ -250,12 +335,18 @@ Eigen::Vector3f line_color(const MeshStyle& style, int l) {
   return style.line_colors.row(style.line_colors.rows() == 1 ? 0 : l).transpose().cast<float>();
 }
 
-/// Colouring: the face's colour (style or base colour) under flat Lambert shading, lit on the
-/// side facing the viewer. `light`: unit light direction in camera coordinates; `eye`: the
-/// perspective eye.
-Eigen::Vector3f shaded_face_color(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, Eigen::Index f,
-                                  const MeshStyle& style, const RenderOptions& o, const Projector& proj,
-                                  const Eigen::Vector3d& light, const Eigen::Vector3d& eye) {
+/// The colours of a face's three corners (equal unless vertex colours are given).
+struct CornerColors {
+  Eigen::Vector3f c[3];
+  bool uniform = true;
+};
+
+/// Colouring: the face's colour (style, vertex colours or base colour) under flat Lambert
+/// shading, lit on the side facing the viewer. `light`: unit light direction in camera
+/// coordinates; `eye`: the perspective eye.
+CornerColors shaded_face_colors(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, Eigen::Index f,
+                                const MeshStyle& style, const RenderOptions& o, const Projector& proj,
+                                const Eigen::Vector3d& light, const Eigen::Vector3d& eye) {
   const Eigen::Vector3d p0 = V.row(F(f, 0)).transpose(), p1 = V.row(F(f, 1)).transpose(),
                         p2 = V.row(F(f, 2)).transpose();
   Eigen::Vector3d n = (p1 - p0).cross(p2 - p0);
@@ -268,9 +359,20 @@ Eigen::Vector3f shaded_face_color(const Eigen::MatrixXd& V, const Eigen::MatrixX
     const Eigen::Vector3d nc(proj.frame.right.dot(n), proj.frame.up.dot(n), proj.frame.back.dot(n));
     shade = o.ambient + o.diffuse * std::max(0.0, nc.dot(light));
   }
+  CornerColors out;
+  if (style.vertex_colors.rows()) {
+    for (int k = 0; k < 3; ++k)
+      out.c[k] = (Eigen::Vector3d(style.vertex_colors.row(F(f, k)).transpose()) * shade)
+                     .cwiseMin(1.0)
+                     .cwiseMax(0.0)
+                     .cast<float>();
+    out.uniform = out.c[0] == out.c[1] && out.c[1] == out.c[2];
+    return out;
+  }
   const Eigen::Vector3d base =
       style.face_colors.rows() ? Eigen::Vector3d(style.face_colors.row(f).transpose()) : o.base_color;
-  return (base * shade).cwiseMin(1.0).cwiseMax(0.0).cast<float>();
+  out.c[0] = out.c[1] = out.c[2] = (base * shade).cwiseMin(1.0).cwiseMax(0.0).cast<float>();
+  return out;
 }
 
 /// The supersampled picture being drawn: colour and depth key per sample.
@@ -292,9 +394,9 @@ double twice_screen_area(const Eigen::Vector3d s[3]) {
 }
 
 /// Rasterising: z-tested samples of the screen triangle s (twice its signed area: area2) get
-/// face_color, or the colour of the nearest of `lines` (screen segments between the points S)
-/// within half_line samples.
-void rasterise_face(SampleBuffer& buf, const Eigen::Vector3d s[3], double area2, const Eigen::Vector3f& face_color,
+/// the face's colour (interpolated between its corners), or the colour of the nearest of `lines` (screen segments
+/// between the points S) within half_line samples.
+void rasterise_face(SampleBuffer& buf, const Eigen::Vector3d s[3], double area2, const CornerColors& face_color,
                     const std::vector<int>& lines, const std::vector<Eigen::Vector3d>& S, const MeshStyle& style,
                     double half_line) {
   const int W = buf.W, H = buf.H;
@@ -320,7 +422,10 @@ void rasterise_face(SampleBuffer& buf, const Eigen::Vector3d s[3], double area2,
       const size_t idx = static_cast<size_t>(y) * W + x;
       if (!(q > buf.depth[idx])) continue;
       buf.depth[idx] = q;
-      Eigen::Vector3f c = face_color;
+      Eigen::Vector3f c = face_color.uniform
+                              ? face_color.c[0]
+                              : Eigen::Vector3f(float(w0) * face_color.c[0] + float(w1) * face_color.c[1] +
+                                                float(w2) * face_color.c[2]);
       // The nearest line within half the line width colours the sample (distance to the
       // segment, in samples: round ends).
       double best = half_line;
@@ -365,7 +470,7 @@ Image render_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Mesh
   o.validate();
   validate_mesh(V, F, "render");
   const Eigen::Index nf = F.rows();
-  check_style(style, nf);
+  check_style(style, nf, V.rows());
   if (nf == 0) return Image(o.width, o.height, o.background);
 
   const int ss = o.supersample;
@@ -384,7 +489,7 @@ Image render_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Mesh
     if (!s[0].allFinite() || !s[1].allFinite() || !s[2].allFinite()) continue;  // behind the eye (not clipped)
     const double area2 = twice_screen_area(s);
     if (!(std::abs(area2) > 1e-12)) continue;  // seen edge-on or degenerate: covers nothing
-    rasterise_face(buf, s, area2, shaded_face_color(V, F, f, style, o, proj, light, eye),
+    rasterise_face(buf, s, area2, shaded_face_colors(V, F, f, style, o, proj, light, eye),
                    lines_at_face(F, f, vertex_lines, S, style), S, style, half_line);
   }
   return downsample(buf, o);

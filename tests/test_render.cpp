@@ -267,3 +267,163 @@ TEST(Render, SharpEdgesOfACubeAreItsTwelveEdges) {
   const Mesh g = test::grid(2);
   EXPECT_EQ(sharp_edges(g.V, g.F, 10, true).rows(), 8);  // the boundary of a flat 2×2 grid
 }
+
+// ---------------------------------------------------------------------------------------
+// Up axis, camera angles and vertex colours
+// ---------------------------------------------------------------------------------------
+
+namespace {
+
+/// The bounding box of the pixels that are not white: {xmin, xmax, ymin, ymax}.
+std::array<int, 4> drawn_box(const Image& im) {
+  std::array<int, 4> b{im.width, -1, im.height, -1};
+  for (int y = 0; y < im.height; ++y)
+    for (int x = 0; x < im.width; ++x)
+      if (test::px(im, x, y) != std::array<int, 3>{255, 255, 255}) {
+        b[0] = std::min(b[0], x);
+        b[1] = std::max(b[1], x);
+        b[2] = std::min(b[2], y);
+        b[3] = std::max(b[3], y);
+      }
+  return b;
+}
+
+/// The mean absolute difference of two images' bytes.
+double mean_difference(const Image& a, const Image& b) {
+  double sum = 0;
+  for (size_t i = 0; i < a.rgb.size(); ++i) sum += std::abs(int(a.rgb[i]) - int(b.rgb[i]));
+  return sum / double(a.rgb.size());
+}
+
+/// A triangle standing in the plane y = 0 with its apex at +z: upright for a Z-up scan.
+Mesh z_up_triangle() {
+  Mesh m;
+  m.V.resize(3, 3);
+  m.V << -1, 0, -1, 1, 0, -1, 0, 0, 1;
+  m.F.resize(1, 3);
+  m.F << 0, 1, 2;
+  return m;
+}
+
+/// Width of the drawn pixels on row y.
+int row_width(const Image& im, int y) {
+  int n = 0;
+  for (int x = 0; x < im.width; ++x) n += test::px(im, x, y) != std::array<int, 3>{255, 255, 255};
+  return n;
+}
+
+}  // namespace
+
+TEST(Render, UpAxisShowsAZUpMeshUpright) {
+  const Mesh m = z_up_triangle();
+  RenderOptions o;
+  o.width = o.height = 80;
+  o.view = View::Front;
+  o.up = UpAxis::PosZ;  // front looks from -y: the triangle faces the camera, apex up
+  Image im = render_mesh(m.V, m.F, {}, o);
+  std::array<int, 4> b = drawn_box(im);
+  ASSERT_GE(b[1], 0) << "nothing drawn";
+  EXPECT_LT(row_width(im, b[2] + 2), row_width(im, b[3] - 2) / 4) << "apex at the top";
+  o.up = UpAxis::NegZ;  // upside down
+  im = render_mesh(m.V, m.F, {}, o);
+  b = drawn_box(im);
+  EXPECT_GT(row_width(im, b[2] + 2), 4 * row_width(im, b[3] - 2)) << "apex at the bottom";
+  o.up = UpAxis::PosY;  // the default looks from +z: the triangle is seen edge-on
+  im = render_mesh(m.V, m.F, {}, o);
+  b = drawn_box(im);
+  EXPECT_LE(b[3] - b[2], 3) << "edge-on: a line at most";
+}
+
+TEST(Render, UpAxesAreRotationsThatKeepTheViewsApart) {
+  // A box longer along the up axis than across it is drawn taller than wide from the side,
+  // whichever axis is up.
+  for (const std::string& name : up_axis_names()) {
+    const UpAxis up = up_axis_from_name(name);
+    Mesh box = cube();
+    const int axis = (name.back() == 'x') ? 0 : (name.back() == 'y') ? 1 : 2;
+    for (int k = 0; k < 3; ++k)
+      if (k != axis) box.V.col(k) *= 0.3;
+    RenderOptions o;
+    o.width = o.height = 60;
+    o.up = up;
+    for (View v : {View::Front, View::Right, View::Iso}) {
+      o.view = v;
+      const std::array<int, 4> b = drawn_box(render_mesh(box.V, box.F, {}, o));
+      EXPECT_GT(b[3] - b[2], 2 * (b[1] - b[0])) << "up " << name << ", view " << int(v);
+    }
+    o.view = View::Top;  // seen along the up axis: a small square
+    const std::array<int, 4> b = drawn_box(render_mesh(box.V, box.F, {}, o));
+    EXPECT_LE(std::abs((b[3] - b[2]) - (b[1] - b[0])), 2) << "up " << name;
+    EXPECT_EQ(up_axis_name(up), name);
+  }
+  EXPECT_EQ(up_axis_from_name("+z"), UpAxis::PosZ);
+  EXPECT_THROW(up_axis_from_name("w"), InvalidInput);
+}
+
+TEST(Render, AzimuthAndElevationTurnTheNamedViews) {
+  // An asymmetric shape so that every view differs.
+  Mesh m = cube();
+  m.V.col(0) *= 1.6;
+  m.V(7, 1) += 0.7;
+  for (UpAxis up : {UpAxis::PosY, UpAxis::PosZ}) {
+    RenderOptions o;
+    o.width = o.height = 64;
+    o.up = up;
+    o.view = View::Right;
+    const Image right = render_mesh(m.V, m.F, {}, o);
+    o.view = View::Top;
+    const Image top = render_mesh(m.V, m.F, {}, o);
+    o.view = View::Front;
+    const Image front = render_mesh(m.V, m.F, {}, o);
+    o.azimuth_deg = 90;  // front turned by 90° is the right view
+    const Image turned = render_mesh(m.V, m.F, {}, o);
+    EXPECT_LT(mean_difference(turned, right), 0.5);
+    EXPECT_GT(mean_difference(turned, front), 5.0);
+    o.azimuth_deg = 0;
+    o.elevation_deg = 90;  // front raised by 90° is the top view
+    EXPECT_LT(mean_difference(render_mesh(m.V, m.F, {}, o), top), 0.5);
+    o.elevation_deg = 30;
+    const Image raised = render_mesh(m.V, m.F, {}, o);
+    EXPECT_GT(mean_difference(raised, front), 2.0);
+    EXPECT_GT(mean_difference(raised, top), 2.0);
+  }
+  RenderOptions o;
+  o.elevation_deg = 91;
+  EXPECT_THROW(o.validate(), InvalidInput);
+  o.elevation_deg = 0;
+  o.azimuth_deg = 400;
+  EXPECT_THROW(o.validate(), InvalidInput);
+}
+
+TEST(Render, VertexColorsAreInterpolatedAndShaded) {
+  const Mesh m = big_triangle();
+  MeshStyle s;
+  s.vertex_colors.resize(3, 3);
+  s.vertex_colors << 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  RenderOptions o;
+  o.width = o.height = 100;
+  o.view = View::Front;
+  o.supersample = 1;
+  const Image im = render_mesh(m.V, m.F, s, o);
+  // Near each corner its own colour dominates (bottom left red, bottom right green, apex blue).
+  const auto bl = test::px(im, 12, 92), br = test::px(im, 87, 92), apex = test::px(im, 50, 10);
+  EXPECT_GT(bl[0], 3 * std::max(bl[1], bl[2]) + 10);
+  EXPECT_GT(br[1], 3 * std::max(br[0], br[2]) + 10);
+  EXPECT_GT(apex[2], 3 * std::max(apex[0], apex[1]) + 10);
+  // The centroid mixes the three equally, under the face's shade.
+  const auto c = test::px(im, 50, 63);
+  EXPECT_LE(std::abs(c[0] - c[1]), 12);
+  EXPECT_LE(std::abs(c[1] - c[2]), 12);
+  // One colour everywhere gives the same pixels as that face colour.
+  MeshStyle grey, faces;
+  grey.vertex_colors = Eigen::MatrixXd::Constant(3, 3, 0.6);
+  faces.face_colors = Eigen::MatrixXd::Constant(1, 3, 0.6);
+  EXPECT_EQ(render_mesh(m.V, m.F, grey, o), render_mesh(m.V, m.F, faces, o));
+  // Wrong sizes, or both kinds at once, are refused.
+  MeshStyle bad;
+  bad.vertex_colors = Eigen::MatrixXd::Zero(2, 3);
+  EXPECT_THROW(render_mesh(m.V, m.F, bad, o), InvalidInput);
+  bad.vertex_colors = Eigen::MatrixXd::Zero(3, 3);
+  bad.face_colors = Eigen::MatrixXd::Zero(1, 3);
+  EXPECT_THROW(render_mesh(m.V, m.F, bad, o), InvalidInput);
+}

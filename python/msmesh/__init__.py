@@ -15,6 +15,7 @@ continues; an exception it raises is re-raised by the call.
 """
 
 import os
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 # OpenMP threads waiting at a barrier spin by default, which makes runs several times slower
 # on a busy machine (docs/performance.md); libgomp reads this once, when the extension
@@ -43,10 +44,16 @@ from . import _core
 
 __version__ = "0.1.0"
 
+# Type hints: a file name, and anything numpy.asarray accepts (arrays, nested lists).
+PathLike = Union[str, "os.PathLike[str]"]
+ArrayLike = Any
+Progress = Optional[Callable[[ProgressEvent], Optional[bool]]]
+
 __all__ = [
     "denoise", "filter_normals", "update_vertices", "add_noise", "evaluate", "choose_preset", "estimate_noise",
     "taubin_smooth",
     "read_mesh", "write_mesh", "repair", "make_shape", "shape_names", "preset_names", "PARAMETERS",
+    "render", "compare", "info", "report", "write_png", "view_names", "up_axis_names", "RENDER_PARAMETERS",
     "set_threads", "threads",
     "Error", "InvalidInputError", "IoError", "SolverError", "Cancelled", "ProgressEvent",
     "DenoiseOptions", "DenoiseMethod", "LinearSolver", "NormalFilterOptions", "VertexUpdateOptions", "BilateralOptions",
@@ -92,17 +99,17 @@ def _parameter_doc(table, indent="        "):
     return "\n".join(lines)
 
 
-def preset_names():
+def preset_names() -> List[str]:
     """Preset names accepted by denoise(): auto (the default: chosen from the mesh), cad, smooth."""
     return list(_PRESETS)
 
 
-def shape_names():
+def shape_names() -> List[str]:
     """Names accepted by make_shape()."""
     return list(_core.shape_names())
 
 
-def set_threads(n):
+def set_threads(n: int) -> None:
     """Threads for the parallel work of every later call, from any Python thread: n >= 1, or 0
     for the default (OMP_NUM_THREADS, else every core). Results are the same for any n.
     Raises InvalidInputError for n < 0 or n > 4096."""
@@ -113,7 +120,7 @@ def set_threads(n):
     _core.set_threads(int(n))
 
 
-def threads():
+def threads() -> int:
     """The number of threads the next call will use."""
     return _core.threads()
 
@@ -164,7 +171,7 @@ def _resolve_preset(V, F, preset, report, strength=1.0):
     return r["options"]
 
 
-def estimate_noise(V, F):
+def estimate_noise(V: ArrayLike, F: ArrayLike) -> Dict[str, Any]:
     """The noise of a mesh, from the mesh alone (include/msmesh/noise_estimate.h).
 
     Returns a dict: sigma (robust standard deviation of the noise along the normals, in mean
@@ -176,7 +183,7 @@ def estimate_noise(V, F):
     return _core.estimate_noise(V, F)
 
 
-def taubin_smooth(V, F, iterations=10, lambda_=0.5, mu=-0.53):
+def taubin_smooth(V: ArrayLike, F: ArrayLike, iterations: int = 10, lambda_: float = 0.5, mu: float = -0.53) -> np.ndarray:
     """Taubin's lambda|mu smoothing with uniform weights (no shrinkage); returns (#V, 3).
 
     iterations: lambda|mu pairs (>= 0); lambda_ in (0, 1]; mu in [-1, 0) with |mu| > lambda_.
@@ -190,14 +197,15 @@ def taubin_smooth(V, F, iterations=10, lambda_=0.5, mu=-0.53):
     return _core.taubin_smooth(V, F, iterations, lambda_, mu)
 
 
-def choose_preset(V, F):
+def choose_preset(V: ArrayLike, F: ArrayLike) -> Dict[str, Any]:
     """The preset 'auto' picks for a mesh: dict(preset, sharp_fraction, flat_fraction,
     noise_level, reason)."""
     V, F = _checks.mesh(V, F)
     return _core.choose_preset(V, F)
 
 
-def denoise(V, F, preset=DEFAULT_PRESET, method="nmstv", progress=None, strength=1.0, **params):
+def denoise(V: ArrayLike, F: ArrayLike, preset: str = DEFAULT_PRESET, method: str = "nmstv", progress: Progress = None,
+            strength: float = 1.0, **params: Any) -> Tuple[np.ndarray, Dict[str, Any]]:
     """Denoises a mesh: normal filtering, then vertex updating (F is unchanged).
 
     V: (#V, 3) positions; F: (#F, 3) triangle indices.
@@ -236,7 +244,9 @@ def denoise(V, F, preset=DEFAULT_PRESET, method="nmstv", progress=None, strength
     return V_new, report
 
 
-def filter_normals(V, F, preset=None, method="nmstv", normals0=None, progress=None, **params):
+def filter_normals(V: ArrayLike, F: ArrayLike, preset: Optional[str] = None, method: str = "nmstv",
+                   normals0: Optional[ArrayLike] = None, progress: Progress = None,
+                   **params: Any) -> Tuple[np.ndarray, np.ndarray, Dict[str, Any]]:
     """Algorithm 1 alone: filters the face normals of a mesh.
 
     preset: None (the library defaults of NormalFilterOptions: preset 'cad'), 'cad', 'smooth'
@@ -269,7 +279,8 @@ def filter_normals(V, F, preset=None, method="nmstv", normals0=None, progress=No
     return N, v, report
 
 
-def update_vertices(V, F, N, v=None, preset=None, progress=None, **params):
+def update_vertices(V: ArrayLike, F: ArrayLike, N: ArrayLike, v: Optional[ArrayLike] = None, preset: Optional[str] = None,
+                    progress: Progress = None, **params: Any) -> Tuple[np.ndarray, Dict[str, Any]]:
     """Algorithm 2 alone: moves the vertices so that the face normals match N.
 
     N: (#F, 3) target unit normals; v: None (all ones) or the (#E,) edge field of
@@ -303,7 +314,8 @@ for _function, _parameters in ((denoise, PARAMETERS), (filter_normals, _NORMAL_P
     _function.__doc__ = _function.__doc__.replace("{parameters}", _parameter_doc(_parameters))
 
 
-def add_noise(V, F, sigma=0.2, direction="normal", impulsive=0.0, seed=0):
+def add_noise(V: ArrayLike, F: ArrayLike, sigma: float = 0.2, direction: str = "normal", impulsive: float = 0.0,
+              seed: int = 0) -> np.ndarray:
     """Seeded noise as in the denoising literature; returns noisy V (#V, 3).
 
     sigma: standard deviation in units of the mean edge length, in [0, 1e6].
@@ -320,7 +332,7 @@ def add_noise(V, F, sigma=0.2, direction="normal", impulsive=0.0, seed=0):
     return _core.add_noise(V, F, sigma, direction, impulsive, seed)
 
 
-def evaluate(V, F, V_truth, F_truth):
+def evaluate(V: ArrayLike, F: ArrayLike, V_truth: ArrayLike, F_truth: ArrayLike) -> Dict[str, Any]:
     """Error figures of a result (V, F) against a ground truth (as `msmesh eval`).
 
     Returns a dict: same_connectivity; msae (radians^2), msae_e3 (= msae x 1e3, as printed in
@@ -349,17 +361,37 @@ def write_mesh(path, V, F, binary=True):
     _core.write_mesh(path, V, F, _checks.boolean(binary, "binary"))
 
 
-def repair(V, F, weld=0.0, merge_duplicate_vertices=True, remove_degenerate_faces=True,
-           remove_duplicate_faces=True, orient=True, split_non_manifold=False, remove_unreferenced=False):
-    """Repairs a messy mesh (see docs/robustness.md): merges duplicate vertices (exact, or closer
-    than weld x mean edge length; faces are redirected, the copies stay unreferenced), removes
-    faces repeating a vertex, zero-area and duplicate faces, orients each component
-    consistently (closed ones outwards), optionally splits non-manifold vertices (copies
-    appended) and removes unreferenced vertices (the only option that renumbers vertices).
+def repair(V: ArrayLike, F: ArrayLike, weld: float = 0.0, merge_duplicate_vertices: bool = True,
+           remove_degenerate_faces: bool = True, remove_duplicate_faces: bool = True, orient: bool = True,
+           split_non_manifold: bool = False, remove_unreferenced: bool = False) -> Dict[str, Any]:
+    """Repairs a messy mesh, as `msmesh repair` (same defaults; see docs/robustness.md).
 
-    Returns a dict: V, F, vertex_map (new index of each input vertex, -1 if removed),
-    face_origin (input face of each output face) and report (counts of what was done, and
-    'actions', one line per action)."""
+    Parameters
+    ----------
+    V : array_like
+        (#V, 3) vertex positions.
+    F : array_like
+        (#F, 3) triangle indices; faces repeating a vertex are accepted (and removed).
+    weld : float
+        Merge vertices closer than weld x the mean edge length (0: exact duplicates only); faces
+        are redirected to the first copy, the copies stay unreferenced (``--weld``).
+    merge_duplicate_vertices, remove_degenerate_faces, remove_duplicate_faces, orient : bool
+        The repairs done by default: merge duplicates, remove faces repeating a vertex or of
+        zero area, remove duplicate faces, orient each component consistently (closed ones
+        outwards).
+    split_non_manifold : bool
+        Give each fan around a non-manifold vertex its own copy (appended), as
+        ``--split-non-manifold``.
+    remove_unreferenced : bool
+        Remove vertices no face uses (the only option that renumbers vertices).
+
+    Returns
+    -------
+    dict
+        V, F, vertex_map (new index of each input vertex, -1 if removed), face_origin (input
+        face of each output face) and report (counts of what was done, and 'actions', one line
+        per action).
+    """
     V = _checks.real_matrix(V, "V")
     F = _checks.faces(F, V.shape[0], "F", allow_empty=True, allow_repeated=True)
     o = _core.RepairOptions()
@@ -373,11 +405,448 @@ def repair(V, F, weld=0.0, merge_duplicate_vertices=True, remove_degenerate_face
     return _core.repair(V, F, o)
 
 
-def make_shape(name, resolution):
+def make_shape(name: str, resolution: int) -> Tuple[np.ndarray, np.ndarray]:
     """A built-in test shape (see shape_names()) at a resolution level >= 1; returns (V, F)."""
     _checks.choice(name, "name", tuple(_core.shape_names()))
     resolution = _checks.integer(resolution, "resolution", minimum=1)
     return _core.make_shape(name, resolution)
+
+
+# ---- pictures and figures (msmesh_draw, mesh_statistics.h) ---------------------------------------
+
+# Keyword parameters of render() and compare(): the library's render table (render.h), named
+# like the options of `msmesh render` ('-' -> '_'): width, height, supersample, fov, margin,
+# ambient, diffuse, line_width, azimuth, elevation.
+RENDER_PARAMETERS = _table("render")
+_RENDER_COLORS = ("auto", "none", "file", "error", "field", "labels")
+
+
+def view_names() -> List[str]:
+    """The named views of render() and compare(): iso, front, back, left, right, top, bottom."""
+    return list(_core.view_names())
+
+
+def up_axis_names() -> List[str]:
+    """The up axes of render() and compare(): x, -x, y, -y, z, -z."""
+    return list(_core.up_axis_names())
+
+
+def _render_options(view, up, perspective, params, function, defaults=None):
+    """RenderOptions of the keywords, checked as the CLI checks its options."""
+    o = _core.RenderOptions()
+    _checks.choice(view, "view", tuple(_core.view_names()))
+    up = _checks.choice(up, "up", tuple(_core.up_axis_names()) + tuple("+" + a for a in "xyz"))
+    o.view = view
+    o.up = up
+    o.perspective = _checks.boolean(perspective, "perspective")
+    _apply_parameters(o, dict(defaults or {}, **params), RENDER_PARAMETERS, function)
+    o.validate()
+    return o
+
+
+def _degrees(value, name, maximum, maximum_open=False):
+    value = _checks.real(value, name, minimum=0.0)
+    if value > maximum or (maximum_open and value == maximum):
+        raise InvalidInputError(f"{name}: must be in [0, {maximum:g}{')' if maximum_open else ']'} degrees, "
+                                f"got {value:g}")
+    return value
+
+
+def write_png(path: PathLike, image: ArrayLike) -> None:
+    """Writes an RGB image as a PNG file, atomically (the file appears completely or not at all).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The .png file to write.
+    image : numpy.ndarray
+        (height, width, 3) uint8 array, as render() and compare() return.
+
+    Raises
+    ------
+    IoError
+        When the file cannot be written.
+    """
+    _core.write_png(_checks.path(path), _checks.image(image))
+
+
+def render(V: ArrayLike, F: ArrayLike, path: Optional[PathLike] = None, *, view: str = "iso", up: str = "y",
+           perspective: bool = False, color: str = "auto", vertex_colors: Optional[ArrayLike] = None,
+           truth: Optional[Tuple[ArrayLike, ArrayLike]] = None, v: Optional[ArrayLike] = None,
+           labels: Optional[ArrayLike] = None, feature_edges: float = 0.0, error_max: float = 0.0,
+           **params: float) -> np.ndarray:
+    """Renders a mesh to an RGB picture, as `msmesh render` (same options, same defaults).
+
+    Parameters
+    ----------
+    V : array_like
+        (#V, 3) vertex positions.
+    F : array_like
+        (#F, 3) triangle indices.
+    path : str or os.PathLike, optional
+        Also write the picture to this .png file (atomically).
+    view : str
+        One of view_names(): iso (default), front, back, left, right, top, bottom.
+    up : str
+        The world axis shown upwards: 'y' (default; front looks from +z), 'z' (CAD and STL;
+        front looks from -y), 'x', or '-x', '-y', '-z' (upside down). See docs/rendering.md.
+    perspective : bool
+        Perspective camera instead of orthographic.
+    color : str
+        'auto' (default: vertex_colors when given, else grey), 'none', 'file' (vertex_colors),
+        'error' (angle to ``truth`` per face, with a colour bar), 'field' (edge field ``v`` on
+        the edges, with a colour bar), 'labels' (one colour per segment of ``labels``).
+    vertex_colors : array_like, optional
+        (#V, 3) RGB in [0, 1], e.g. the colours of a scan.
+    truth : (V, F) pair, optional
+        Ground truth with the same faces, for color='error'.
+    v : array_like, optional
+        (#E,) edge field (filter_normals, segment) on the edges of build order, for color='field'.
+    labels : array_like, optional
+        (#F,) segment labels, for color='labels'.
+    feature_edges : float
+        Draw edges sharper than this dihedral angle (degrees, [0, 180)) as thin dark lines; 0: off.
+    error_max : float
+        Top of the error colour scale in degrees ([0, 180]); 0: the 98th percentile, rounded up.
+    **params
+        The render parameters (RENDER_PARAMETERS, as `msmesh render`'s options):
+{parameters}
+        line_width defaults to 2.5 for color='field' and 'labels', as in the CLI.
+
+    Returns
+    -------
+    numpy.ndarray
+        (height, width, 3) uint8 RGB; a colour bar adds a strip below the picture.
+
+    Raises
+    ------
+    InvalidInputError
+        For a bad argument (named), or colour data missing for the colour mode.
+    IoError
+        When ``path`` cannot be written.
+    """
+    V, F = _checks.mesh(V, F)
+    color = _checks.choice(color, "color", _RENDER_COLORS)
+    colors = _checks.colors(vertex_colors, V.shape[0])
+    if color == "file" and colors is None:
+        raise InvalidInputError("vertex_colors: color='file' needs vertex_colors")
+    Vt, Ft = np.zeros((0, 3)), np.zeros((0, 3), np.int32)
+    if truth is not None:
+        Vt, Ft = _checks.mesh_pair(truth, "truth")
+    elif color == "error":
+        raise InvalidInputError("truth: color='error' needs truth=(V, F)")
+    field = np.zeros(0)
+    if v is not None:
+        field = _checks.real_vector(v, "v")
+    elif color == "field":
+        raise InvalidInputError("v: color='field' needs the edge field v")
+    segments = np.zeros(0, np.int32)
+    if labels is not None:
+        segments = _checks.labels(labels, "labels")
+    elif color == "labels":
+        raise InvalidInputError("labels: color='labels' needs labels")
+    feature_edges = _degrees(feature_edges, "feature_edges", 180.0, maximum_open=True)
+    error_max = _degrees(error_max, "error_max", 180.0)
+    defaults = {"line_width": 2.5} if color in ("field", "labels") else {}
+    options = _render_options(view, up, perspective, params, "render", defaults)
+    out_path = None if path is None else _checks.path(path)
+    image, _summary = _core.render(V, F, options, color, np.zeros((0, 3)) if colors is None else colors, Vt, Ft,
+                                   field, segments, feature_edges, error_max)
+    if out_path is not None:
+        _core.write_png(out_path, image)
+    return image
+
+
+def compare(meshes: Sequence[Tuple[ArrayLike, ...]], path: Optional[PathLike] = None, *,
+            captions: Optional[Sequence[str]] = None, truth: Optional[Tuple[ArrayLike, ArrayLike]] = None,
+            color: str = "auto", noisy_panel: Union[str, int, None] = "auto", view: str = "iso", up: str = "y",
+            perspective: bool = False, feature_edges: float = 0.0, error_max: float = 0.0, title: str = "",
+            **params: float) -> Tuple[np.ndarray, Dict[str, Any]]:
+    """Several meshes side by side from the same camera, as `msmesh compare` (same defaults).
+
+    Parameters
+    ----------
+    meshes : sequence of (V, F) or (V, F, vertex_colors)
+        The panels, left to right.
+    path : str or os.PathLike, optional
+        Also write the sheet to this .png file (atomically).
+    captions : sequence of str, optional
+        One per mesh; default "mesh 1", "mesh 2", ...
+    truth : (V, F) pair, optional
+        Ground truth: MSAE (x1e-3) and mean angle under each panel, and color='error'.
+    color : str
+        'auto' (default: a panel's vertex colours when it has them, else grey), 'none', 'file',
+        or 'error' (angle to the truth per face, one scale for all panels).
+    noisy_panel : 'auto', int or None
+        The panel (0-based) holding the noisy input, which the automatic error scale leaves out
+        so that the results are not washed out (its larger errors saturate and the legend says
+        so). 'auto' (default): the panel whose mean angle error is at least twice every other
+        panel's, if any. None: no panel.
+    view, up, perspective
+        The camera, as for render().
+    feature_edges : float
+        Draw edges sharper than this angle (degrees, [0, 180)) dark; 0: off.
+    error_max : float
+        Top of the error colour scale in degrees; 0 (default): from the results.
+    title : str
+        A line above the panels.
+    **params
+        The render parameters of each panel (RENDER_PARAMETERS); width and height default to
+        400 (kComparePanelSize of compare_sheet.h), as `msmesh compare --size`.
+
+    Returns
+    -------
+    image : numpy.ndarray
+        (height, width, 3) uint8 RGB sheet.
+    report : dict
+        'panels' (per panel with a truth: same_connectivity, msae_e3, mean_angle_deg, flipped,
+        distance_rms), 'error_top' (top of the error scale, degrees), 'noisy_panel' (index or
+        None), 'saturated', 'scale_note'.
+    """
+    if isinstance(meshes, (str, bytes)) or not hasattr(meshes, "__len__") or len(meshes) == 0:
+        raise InvalidInputError("meshes: must be a non-empty sequence of (V, F) or (V, F, vertex_colors)")
+    if captions is not None:
+        if isinstance(captions, str) or len(captions) != len(meshes):
+            raise InvalidInputError(f"captions: must be {len(meshes)} strings, one per mesh")
+        if not all(isinstance(c, str) for c in captions):
+            raise InvalidInputError("captions: must be strings")
+    panels = []
+    for i, m in enumerate(meshes):
+        if not isinstance(m, (tuple, list)) or len(m) not in (2, 3):
+            raise InvalidInputError(f"meshes[{i}]: must be (V, F) or (V, F, vertex_colors)")
+        V, F = _checks.mesh(m[0], m[1], prefix=f"meshes[{i}] ")
+        colors = _checks.colors(m[2] if len(m) == 3 else None, V.shape[0], f"meshes[{i}] vertex_colors")
+        caption = captions[i] if captions is not None else f"mesh {i + 1}"
+        panels.append(_core.ComparePanel(V, F, np.zeros((0, 3)) if colors is None else colors, caption))
+    Vt, Ft = np.zeros((0, 3)), np.zeros((0, 3), np.int32)
+    if truth is not None:
+        Vt, Ft = _checks.mesh_pair(truth, "truth")
+    o = _core.CompareOptions()
+    o.color = _checks.choice(color, "color", tuple(_core.sheet_color_names()))
+    if o.color == "error" and truth is None:
+        raise InvalidInputError("truth: color='error' needs truth=(V, F)")
+    if isinstance(noisy_panel, str) and noisy_panel == "auto":
+        o.noisy_panel = _core.NOISY_PANEL_AUTO
+    elif noisy_panel is None:
+        o.noisy_panel = _core.NO_NOISY_PANEL
+    else:
+        o.noisy_panel = _checks.integer(noisy_panel, "noisy_panel", minimum=0, maximum=len(meshes) - 1)
+    o.feature_angle = _degrees(feature_edges, "feature_edges", 180.0, maximum_open=True)
+    o.error_max = _degrees(error_max, "error_max", 180.0)
+    if not isinstance(title, str):
+        raise InvalidInputError(f"title: must be a str, got {type(title).__name__}")
+    o.title = title
+    panel = _core.parameters(_core.CompareOptions().render)  # the panel size of `msmesh compare --size`
+    o.render = _render_options(view, up, perspective, params, "compare",
+                               {"width": panel["width"], "height": panel["height"]})
+    out_path = None if path is None else _checks.path(path)
+    report = _core.compare(panels, Vt, Ft, o)
+    image = report.pop("image")
+    if out_path is not None:
+        _core.write_png(out_path, image)
+    return image, report
+
+
+def info(V: ArrayLike, F: ArrayLike) -> Dict[str, Any]:
+    """Counts, defects, size, area, volume, watertightness and genus of a mesh.
+
+    The same fields, with the same values, as `msmesh info --json` gives for a file holding
+    (V, F), less those about the file itself (file, dropped_degenerate_faces, vertex_colors,
+    texture_coordinates, texture_coordinates_with_seams, vertex_normals).
+
+    Parameters
+    ----------
+    V : array_like
+        (#V, 3) vertex positions.
+    F : array_like
+        (#F, 3) triangle indices (may be empty).
+
+    Returns
+    -------
+    dict
+        vertices, faces, edges, boundary_edges, boundary_loops, largest_boundary_loops (up to
+        5 sizes), non_manifold_edges, non_manifold_vertices, unreferenced_vertices,
+        inconsistently_oriented_edges, components, mean_edge_length, bbox_min, bbox_max,
+        bbox_diagonal; area; volume (sum over the closed components, signed: negative when
+        the faces point inwards; None when no component is closed); closed_components;
+        watertight (every edge has two faces walking it in opposite directions);
+        euler_characteristic (V - E + F); genus (sum over the components of
+        (2 - chi - boundary loops) / 2; None when a component is non-manifold or
+        non-orientable); component_details (up to 20 dicts: faces, vertices, edges, area,
+        closed, manifold, orientable, consistently_oriented, volume, euler_characteristic,
+        boundary_loops, genus).
+    """
+    V = _checks.real_matrix(V, "V")
+    F = _checks.faces(F, V.shape[0], "F", allow_empty=True)
+    return _core.info(V, F)
+
+
+render.__doc__ = render.__doc__.replace("{parameters}", _parameter_doc(RENDER_PARAMETERS, " " * 12))
+
+
+def _report_number(x):
+    """A figure as the CLI's reports print it (4 significant digits, '-' when missing)."""
+    return "-" if x is None or not np.isfinite(x) else f"{x:.4g}"
+
+
+def _report_parameters(parameters):
+    """The report's parameter rows of a run's 'parameters' dict, described from the library's
+    tables as the CLI describes them: 'name (symbol): help' -> 'value unit'."""
+    tables = [PARAMETERS] + [globals()[t] for t in ("SEGMENT_PARAMETERS", "INPAINT_PARAMETERS") if t in globals()]
+    rows = []
+    for name, value in parameters.items():
+        entry = next((t[name] for t in tables if name in t), None)
+        if isinstance(value, (bool, np.bool_)):
+            shown = "yes" if value else "no"
+        elif isinstance(value, float):
+            shown = repr(value) if value != int(value) or abs(value) >= 1e15 else str(int(value))
+        else:
+            shown = str(value)
+        if entry is None:
+            rows.append((name, shown))
+            continue
+        if entry.get("unit"):
+            shown += " " + entry["unit"]
+        option = entry["option"][2:]
+        rows.append((f"{option}{' (' + entry['symbol'] + ')' if entry.get('symbol') else ''}: {entry['help']}", shown))
+    return rows
+
+
+def _report_plots(run):
+    """The convergence plots of a run report (denoise, filter_normals, segment, inpaint), as the
+    CLI's --report draws them."""
+    plots = []
+    residual, change = run.get("residual_history"), run.get("normal_change_history")
+    if residual or change:
+        plots.append(("Normal filtering (Algorithm 1)", "mean-edge units", True,
+                      [("residual |p - grad N|_V", list(map(float, residual or []))),
+                       ("change |N(k+1) - N(k)|_U", list(map(float, change or [])))]))
+    if run.get("energy_history"):
+        plots.append(("Energy (15) per iteration", "energy", False,
+                      [("energy", list(map(float, run["energy_history"])))]))
+    if run.get("vertex_change_history"):
+        plots.append(("Vertex update (Algorithm 2)", "RMS vertex move", True,
+                      [("RMS vertex move (mean edges)", list(map(float, run["vertex_change_history"])))]))
+    return plots
+
+
+def report(path: Optional[PathLike], meshes: Sequence[Union[Tuple[str, ArrayLike, ArrayLike], Dict[str, Any]]], *,
+           truth: Optional[Tuple[ArrayLike, ArrayLike]] = None, run: Optional[Dict[str, Any]] = None,
+           title: str = "msmesh report", subtitle: str = "", notes: Sequence[str] = (),
+           initial_mesh: Optional[int] = None) -> Optional[str]:
+    """Writes the self-contained HTML report of the CLI's ``--report`` for meshes from Python.
+
+    One page, nothing loaded from elsewhere when viewed: an interactive 3D viewer (three.js,
+    embedded) of the meshes with the colour modes shaded / angle error / edge field / segments,
+    the error figures against a truth, the parameters and the convergence plots of a run.
+
+    Parameters
+    ----------
+    path : str or os.PathLike or None
+        The .html file (written atomically); None returns the page as a string instead.
+    meshes : sequence
+        The viewer's meshes, each ``(name, V, F)`` or a dict with keys name, V, F and optionally
+        v (the (#E,) edge field of denoise/filter_normals/segment), labels ((#F,) segment
+        labels) and highlighted ((#F,) bools, drawn tinted, e.g. inpaint's new_faces).
+    truth : (V, F) pair, optional
+        Ground truth: added to the viewer as 'truth', per-face angle errors for every mesh with
+        its faces, and a table of MSAE (x1e-3), mean angle, flipped faces and distances.
+    run : dict, optional
+        The report of denoise(), filter_normals(), update_vertices(), segment() or inpaint():
+        its 'parameters' fill the parameter table and its histories the convergence plots.
+    title, subtitle : str
+        The page's heading.
+    notes : sequence of str
+        Paragraphs under the tables.
+    initial_mesh : int, optional
+        The mesh shown first (index into ``meshes``); default the last one (the result, when
+        the meshes are input then result, as in the CLI's denoise report).
+
+    Returns
+    -------
+    str or None
+        The page when ``path`` is None.
+
+    Examples
+    --------
+    >>> V_new, run = msmesh.denoise(noisy, F)                       # doctest: +SKIP
+    >>> msmesh.report("r.html", [("input", noisy, F), dict(name="result", V=V_new, F=F, v=run["v"])],
+    ...               truth=(V, F), run=run, title="denoise")      # doctest: +SKIP
+    """
+    if isinstance(meshes, (str, bytes)) or not hasattr(meshes, "__len__"):
+        raise InvalidInputError("meshes: must be a sequence of (name, V, F) or dicts")
+    for name, value in (("title", title), ("subtitle", subtitle)):
+        if not isinstance(value, str):
+            raise InvalidInputError(f"{name}: must be a str, got {type(value).__name__}")
+    if isinstance(notes, str) or not all(isinstance(n, str) for n in notes):
+        raise InvalidInputError("notes: must be a sequence of str")
+    if run is not None and not isinstance(run, dict):
+        raise InvalidInputError(f"run: must be the report dict of a msmesh call, got {type(run).__name__}")
+    viewer = []
+    for i, m in enumerate(meshes):
+        if isinstance(m, dict):
+            unknown = set(m) - {"name", "V", "F", "v", "labels", "highlighted"}
+            if unknown:
+                raise InvalidInputError(f"meshes[{i}]: unknown keys {sorted(unknown)}; valid: name, V, F, v, labels, "
+                                        "highlighted")
+            if "V" not in m or "F" not in m:
+                raise InvalidInputError(f"meshes[{i}]: needs V and F")
+            item = dict(m)
+        elif isinstance(m, (tuple, list)) and len(m) == 3:
+            item = {"name": m[0], "V": m[1], "F": m[2]}
+        else:
+            raise InvalidInputError(f"meshes[{i}]: must be (name, V, F) or a dict")
+        name = item.get("name", f"mesh {i + 1}")
+        if not isinstance(name, str):
+            raise InvalidInputError(f"meshes[{i}] name: must be a str")
+        V, F = _checks.mesh(item["V"], item["F"], prefix=f"meshes[{i}] ")
+        entry = {"name": name, "V": V, "F": F}
+        if item.get("v") is not None:
+            entry["edge_field"] = _checks.real_vector(item["v"], f"meshes[{i}] v")
+        if item.get("labels") is not None:
+            entry["face_labels"] = _checks.labels(item["labels"], f"meshes[{i}] labels")
+        if item.get("highlighted") is not None:
+            flags = np.asarray(item["highlighted"])
+            if flags.dtype != np.bool_ or flags.shape != (F.shape[0],):
+                raise InvalidInputError(f"meshes[{i}] highlighted: must be {F.shape[0]} bools, got {flags.dtype} "
+                                        f"{flags.shape}")
+            entry["highlighted_faces"] = flags.tolist()
+        viewer.append(entry)
+    if initial_mesh is None:
+        initial_mesh = max(0, len(viewer) - 1)
+    initial_mesh = _checks.integer(initial_mesh, "initial_mesh", minimum=0, maximum=max(0, len(viewer) - 1))
+    tables, page_notes = [], []
+    if truth is not None:
+        Vt, Ft = _checks.mesh_pair(truth, "truth")
+        rows = []
+        for entry in viewer:
+            e = _core.evaluate(entry["V"], entry["F"], Vt, Ft)
+            same = e["same_connectivity"]
+            if same:
+                entry["face_error_deg"] = np.degrees(e["angle_rad"])
+            rows.append([entry["name"], _report_number(e["msae_e3"]) if same else "-",
+                         _report_number(e["mean_angle_deg"]) if same else "-", str(e["flipped"]) if same else "-",
+                         _report_number(e["distance_mean"] * 1e3), _report_number(e["distance_rms"] * 1e3),
+                         _report_number(e["distance_max"] * 1e3)])
+        viewer.append({"name": "truth", "V": Vt, "F": Ft})
+        tables.append(("Error against the ground truth",
+                       ["mesh", "MSAE (x1e-3)", "mean angle (deg)", "flipped faces", "dist. mean (x1e-3)",
+                        "dist. RMS (x1e-3)", "dist. max (x1e-3)"], rows))
+        page_notes.append("MSAE: mean over faces of the squared angle (radians) between result and truth face "
+                          "normals, printed x1e-3 as in the paper; mean angle: the plain mean angle in degrees. "
+                          "Distances: vertex to truth surface over the truth's bounding-box diagonal.")
+    shown = viewer[initial_mesh] if viewer else {}
+    # As the CLI's reports: errors when there are, else segments, else the edge field.
+    initial_color = ("error" if "face_error_deg" in shown else "labels" if "face_labels" in shown
+                     else "field" if "edge_field" in shown else "shaded")
+    parameters = _report_parameters(run.get("parameters", {})) if run else []
+    plots = _report_plots(run) if run else []
+    args = (viewer, title, subtitle, initial_mesh, initial_color, parameters, tables, plots,
+            page_notes + list(notes))
+    if path is None:
+        return _core.report_html(*args)
+    _core.write_report(_checks.path(path), *args)
+    return None
 
 
 # ---- applications (present when the library was built with them) --------------------------------
@@ -398,8 +867,8 @@ if hasattr(_core, "segment"):
         report["V_denoised"] = V
         return V
 
-    def segment(V, F, preset="cad", denoise=False, progress=None, local_search=True, max_local_rounds=50,
-                **params):
+    def segment(V: ArrayLike, F: ArrayLike, preset: str = "cad", denoise: bool = False, progress: Progress = None,
+                local_search: bool = True, max_local_rounds: int = 50, **params: Any) -> Tuple[np.ndarray, Dict[str, Any]]:
         """Segments a mesh into piecewise-smooth parts (paper 6.3), as `msmesh segment`:
         Algorithm 1 gives the edge field v, a multicut of the face graph gives the segments.
 
@@ -436,14 +905,37 @@ if hasattr(_core, "segment"):
 
     segment.__doc__ = segment.__doc__.replace("{parameters}", _parameter_doc(SEGMENT_PARAMETERS, " " * 12))
 
-    def feature_lines(V, F, v=None, threshold=0.5, min_edges=1, preset="cad", denoise=False, progress=None):
-        """Feature lines: chains of the edges whose normalised edge field is below `threshold`
-        (in (0, 1]), as `msmesh features`.
+    def feature_lines(V: ArrayLike, F: ArrayLike, v: Optional[ArrayLike] = None, threshold: float = 0.5,
+                      min_edges: int = 1, preset: str = "cad", denoise: bool = False,
+                      progress: Progress = None) -> List[np.ndarray]:
+        """Feature lines, as `msmesh features` (same defaults): chains of the edges whose
+        normalised edge field is below ``threshold``.
 
-        v: the (#E,) edge field of filter_normals() / segment() (edges of report['edges']); None
+        Parameters
+        ----------
+        V : array_like
+            (#V, 3) vertex positions.
+        F : array_like
+            (#F, 3) triangle indices.
+        v : array_like, optional
+            The (#E,) edge field of filter_normals() / segment() (on report['edges']); None
             computes it with filter_normals(preset=preset), after denoise() when denoise=True.
-        Returns a list of int32 arrays of vertex indices (a closed loop repeats its first
-        vertex); polylines with fewer than `min_edges` edges are dropped.
+        threshold : float
+            In (0, 1]: edges whose normalised field is below it are features (``--threshold``).
+        min_edges : int
+            Polylines with fewer edges are dropped (``--min-edges``).
+        preset : str
+            'cad' or 'smooth': the normal filtering parameters when v is None.
+        denoise : bool
+            Denoise first (``--denoise``), when v is None.
+        progress : callable, optional
+            As for denoise().
+
+        Returns
+        -------
+        list of numpy.ndarray
+            int32 arrays of vertex indices, one per polyline; a closed loop repeats its first
+            vertex.
         """
         V, F = _checks.mesh(V, F)
         threshold = _checks.real(threshold, "threshold")
@@ -458,7 +950,7 @@ if hasattr(_core, "segment"):
             v = _checks.real_vector(v, "v")
         return _core.feature_lines(V, F, v, threshold, min_edges)
 
-    def rand_index(labels_a, labels_b):
+    def rand_index(labels_a: ArrayLike, labels_b: ArrayLike) -> float:
         """Rand index of two labellings of the same elements (in [0, 1]; 1 = same partition)."""
         a = _checks.labels(labels_a, "labels_a")
         b = _checks.labels(labels_b, "labels_b")
@@ -474,13 +966,14 @@ if hasattr(_core, "inpaint"):
     # (the library's table); holes= is the list of hole indices.
     INPAINT_PARAMETERS = _table("inpaint")
 
-    def find_holes(V, F):
+    def find_holes(V: ArrayLike, F: ArrayLike) -> List[Dict[str, Any]]:
         """The boundary loops of a mesh: a list of dicts (loop: vertex indices, edges,
         diameter and length in mean edge lengths, component, outer_boundary, simple)."""
         V, F = _checks.mesh(V, F)
         return _core.find_holes(V, F)
 
-    def inpaint(V, F, holes=None, progress=None, **params):
+    def inpaint(V: ArrayLike, F: ArrayLike, holes: Optional[Sequence[int]] = None, progress: Progress = None,
+                **params: Any) -> Tuple[np.ndarray, np.ndarray, Dict[str, Any]]:
         """Fills the holes of a mesh and recovers their sharp features (paper 6.2), like
         `msmesh inpaint`.
 
@@ -506,7 +999,8 @@ if hasattr(_core, "inpaint"):
 
     inpaint.__doc__ = inpaint.__doc__.replace("{parameters}", _parameter_doc(INPAINT_PARAMETERS, " " * 12))
 
-    def inpaint_errors(V_input, F_input, V_result, F_result, V_truth, F_truth, new_faces=None):
+    def inpaint_errors(V_input: ArrayLike, F_input: ArrayLike, V_result: ArrayLike, F_result: ArrayLike,
+                       V_truth: ArrayLike, F_truth: ArrayLike, new_faces: Optional[ArrayLike] = None) -> Dict[str, Any]:
         """Error figures of an inpainting result against a ground truth (distances relative
         to the truth's bounding-box diagonal; see metrics.h). new_faces: (#F_result,) bools, or
         None for the faces beyond the input's."""
@@ -522,7 +1016,8 @@ if hasattr(_core, "inpaint"):
             flags = a.tolist()
         return _core.inpaint_errors(V_input, F_input, V_result, F_result, flags, V_truth, F_truth)
 
-    def punch_holes(V, F, count, radius, seed=0, on_features=False):
+    def punch_holes(V: ArrayLike, F: ArrayLike, count: int, radius: float, seed: int = 0,
+                    on_features: bool = False) -> Tuple[np.ndarray, np.ndarray, Dict[str, Any]]:
         """Punches `count` holes (geodesic disks of `radius` mean edge lengths, seeded) into a
         mesh, for tests and demos. Returns (V_new, F_new, info) with info vertex_map,
         old_to_new, centers and punched (the number of holes made)."""

@@ -183,3 +183,34 @@ def progress(value):
     if value is not None and not callable(value):
         raise InvalidInputError(f"progress: must be callable or None, got {type(value).__name__}")
     return value
+
+
+def colors(x, num_rows, name="vertex_colors"):
+    """(num_rows, 3) float64 RGB array with values in [0, 1], or None."""
+    if x is None:
+        return None
+    a = real_matrix(x, name, allow_empty=num_rows == 0)
+    if a.shape[0] != num_rows:
+        raise InvalidInputError(f"{name}: must have one row per vertex ({num_rows}), got {a.shape[0]}")
+    bad = (a < 0) | (a > 1)
+    if bad.any():
+        row = _first_bad_row(bad)
+        raise InvalidInputError(f"{name}: row {row} = {a[row].tolist()} is outside [0, 1] (RGB as fractions)")
+    return a
+
+
+def mesh_pair(value, name):
+    """A (V, F) pair given as a tuple or list of two arrays, checked as mesh()."""
+    if not isinstance(value, (tuple, list)) or len(value) != 2:
+        raise InvalidInputError(f"{name}: must be a (V, F) pair, got {type(value).__name__}")
+    return mesh(value[0], value[1], prefix=name + " ")
+
+
+def image(x, name="image"):
+    """(height, width, 3) C-contiguous uint8 array."""
+    a = _as_array(x, name)
+    if a.ndim != 3 or a.shape[2] != 3 or a.shape[0] == 0 or a.shape[1] == 0:
+        raise InvalidInputError(f"{name}: shape must be (height, width, 3), got {a.shape}")
+    if a.dtype != np.uint8:
+        raise InvalidInputError(f"{name}: dtype must be uint8, got {a.dtype}")
+    return np.ascontiguousarray(a)

@@ -9,6 +9,7 @@
 #include "msmesh/inpaint.h"
 #include "msmesh/parameters.h"
 #include "msmesh/presets.h"
+#include "msmesh/render.h"
 #include "msmesh/segment.h"
 
 namespace py = pybind11;
@@ -100,6 +101,7 @@ py::list table_binding(const std::string& kind) {
   if (kind == "normal_filter") return table(normal_filter_parameters(), {{"", NormalFilterOptions{}}});
   if (kind == "vertex_update") return table(vertex_update_parameters(), {{"", VertexUpdateOptions{}}});
   if (kind == "inpaint") return table(inpaint_parameters(), {{"", InpaintOptions{}}});
+  if (kind == "render") return table(render_parameters(), {{"", RenderOptions{}}});
   if (kind == "segment") {
     std::vector<std::pair<std::string, SegmentOptions>> d;
     for (const std::string& name : preset_names()) {
@@ -109,7 +111,7 @@ py::list table_binding(const std::string& kind) {
     return table(segment_parameters(), d);
   }
   throw InvalidInput("unknown parameter table '" + kind +
-                     "'; valid: denoise, normal_filter, vertex_update, inpaint, segment");
+                     "'; valid: denoise, normal_filter, vertex_update, inpaint, segment, render");
 }
 
 py::dict resolve_preset_binding(const std::string& name, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
@@ -149,6 +151,7 @@ void bind_parameters(py::module_& m) {
   bind_table(m, vertex_update_parameters());
   bind_table(m, inpaint_parameters());
   bind_table(m, segment_parameters());
+  bind_table(m, render_parameters());
 }
 
 }  // namespace msmesh::python

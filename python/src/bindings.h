@@ -112,5 +112,8 @@ void bind_parameters(py::module_& m);
 void bind_mesh(py::module_& m);
 void bind_segment(py::module_& m);
 void bind_inpaint(py::module_& m);
+void bind_draw(py::module_& m);
+void bind_statistics(py::module_& m);
+void bind_report(py::module_& m);
 
 }  // namespace msmesh::python

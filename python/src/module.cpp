@@ -11,4 +11,7 @@ PYBIND11_MODULE(_core, m) {
   bind_mesh(m);
   bind_segment(m);
   bind_inpaint(m);
+  bind_draw(m);
+  bind_statistics(m);
+  bind_report(m);
 }

@@ -74,3 +74,32 @@ TEST(InfoCli, StanfordBunnyAsciiPly) {
   EXPECT_NE(r.out.find("\"vertices\":35947"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"faces\":69451"), std::string::npos) << r.out;
 }
+
+TEST(InfoCli, AreaVolumeWatertightAndGenus) {
+  const fs::path dir = temp_folder();
+  const std::string cube = (dir / "cube.ply").string(), torus = (dir / "torus.obj").string(),
+                    grid = (dir / "grid.obj").string();
+  write_mesh(cube, make_cube(2));
+  write_mesh(torus, make_torus(12, 6));
+  write_mesh(grid, test::grid(3));
+  test::CliRun r = test::run_cli("info '" + cube + "'");
+  ASSERT_EQ(r.status, 0) << r.out;
+  for (const char* part :
+       {"surface area:                  24\n", "volume:                        8\n",
+        "watertight:                    yes", "Euler characteristic:          2", "genus:                         0\n"})
+    EXPECT_NE(r.out.find(part), std::string::npos) << part << " not in " << r.out;
+  r = test::run_cli("info '" + torus + "' --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  for (const char* part :
+       {"\"genus\":1", "\"euler_characteristic\":0", "\"watertight\":true", "\"closed_components\":1"})
+    EXPECT_NE(r.out.find(part), std::string::npos) << part << " not in " << r.out;
+  r = test::run_cli("info '" + grid + "' --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  for (const char* part : {"\"area\":1,", "\"volume\":null", "\"watertight\":false", "\"euler_characteristic\":1",
+                           "\"genus\":0", "\"component_details\":[{\"faces\":18,"})
+    EXPECT_NE(r.out.find(part), std::string::npos) << part << " not in " << r.out;
+  r = test::run_cli("info '" + grid + "'");
+  EXPECT_NE(r.out.find("volume:                        open (no closed component)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("genus:                         0 (surface with 1 boundary loop)"), std::string::npos) << r.out;
+  fs::remove_all(dir);
+}

@@ -90,3 +90,94 @@ TEST(RenderCli, SegmentAndInpaintReports) {
     EXPECT_NE(html.find(part), std::string::npos) << part;
   fs::remove_all(dir);
 }
+
+TEST(RenderCli, UpAxisAndCameraAngles) {
+  const fs::path dir = test::temp_folder("render_up");
+  auto q = [&](const char* name) { return "'" + (dir / name).string() + "'"; };
+  ASSERT_EQ(test::run_cli("shape fandisk --resolution 3 -o " + q("f.obj")).status, 0);
+  auto render = [&](const std::string& args) {
+    const test::CliRun r = test::run_cli("render " + q("f.obj") + " -o " + q("r.png") + " --size 90x70 " + args);
+    EXPECT_EQ(r.status, 0) << args << "\n" << r.out;
+    return std::make_pair(test::read_bytes(dir / "r.png"), r.out);
+  };
+  const auto y_up = render("");
+  const auto z_up = render("--up z");
+  EXPECT_NE(y_up.first, z_up.first) << "another up axis is another picture";
+  EXPECT_NE(z_up.second.find("view iso, up z"), std::string::npos) << z_up.second;
+  EXPECT_EQ(render("--up +z").first, z_up.first);
+  EXPECT_NE(render("--up -z").first, z_up.first);
+  const auto turned = render("--view front --azimuth 30 --elevation -20");
+  EXPECT_NE(turned.second.find("view front, azimuth 30, elevation -20"), std::string::npos) << turned.second;
+  EXPECT_NE(turned.first, render("--view front").first);
+  EXPECT_EQ(render("--view front --azimuth 360").first.size() > 0, true);
+  // Bad values are usage errors naming the option.
+  for (const char* bad : {"--up w", "--azimuth 400", "--elevation 95", "--elevation x"}) {
+    const test::CliRun r = test::run_cli("render " + q("f.obj") + " -o " + q("r.png") + " " + bad);
+    EXPECT_EQ(r.status, 2) << bad << "\n" << r.out;
+    EXPECT_NE(r.out.find(std::string(bad).substr(0, std::string(bad).find(' '))), std::string::npos) << r.out;
+  }
+  // compare takes the same camera options.
+  const test::CliRun r =
+      test::run_cli("compare " + q("f.obj") + " " + q("f.obj") + " --size 60x60 --up z --azimuth 45 -o " + q("s.png"));
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("view iso, up z, azimuth 45"), std::string::npos) << r.out;
+  fs::remove_all(dir);
+}
+
+TEST(RenderCli, TheFilesOwnColoursAreShown) {
+  const fs::path dir = test::temp_folder("render_colors");
+  auto q = [&](const char* name) { return "'" + (dir / name).string() + "'"; };
+  Mesh m = make_cube(2);
+  m.vertex_colors = Eigen::MatrixXd::Zero(m.V.rows(), 3);
+  m.vertex_colors.col(0).setOnes();
+  write_mesh((dir / "red.ply").string(), m);
+  write_mesh((dir / "plain.ply").string(), make_cube(2));
+  auto render = [&](const std::string& file, const std::string& args) {
+    return test::run_cli("render " + q(file.c_str()) + " -o " + q("r.png") + " --size 60x60 " + args);
+  };
+  test::CliRun r = render("red.ply", "");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("colour file: the file's vertex colours"), std::string::npos) << r.out;
+  const std::string coloured = test::read_bytes(dir / "r.png");
+  r = render("red.ply", "--color none");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("colour none"), std::string::npos) << r.out;
+  EXPECT_NE(test::read_bytes(dir / "r.png"), coloured);
+  r = render("plain.ply", "");
+  EXPECT_NE(r.out.find("colour none"), std::string::npos) << "auto without colours: grey\n" << r.out;
+  r = render("plain.ply", "--color file");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.out.find("has no vertex colours"), std::string::npos) << r.out;
+  fs::remove_all(dir);
+}
+
+TEST(RenderCli, CompareErrorScaleComesFromTheResults) {
+  const fs::path dir = test::temp_folder("compare_scale");
+  auto q = [&](const char* name) { return "'" + (dir / name).string() + "'"; };
+  ASSERT_EQ(test::run_cli("shape sphere --resolution 2 -o " + q("clean.obj")).status, 0);
+  ASSERT_EQ(test::run_cli("noise " + q("clean.obj") + " -o " + q("noisy.obj") + " --sigma 0.4 --seed 2").status, 0);
+  ASSERT_EQ(test::run_cli("noise " + q("clean.obj") + " -o " + q("result.obj") + " --sigma 0.03 --seed 2").status, 0);
+  const std::string base = "compare " + q("noisy.obj") + " " + q("result.obj") + " " + q("clean.obj") + " --truth " +
+                           q("clean.obj") + " --color error --size 100x100 -o " + q("s.png");
+  auto top = [](const std::string& out) {
+    const size_t at = out.find("error colours 0-");
+    return at == std::string::npos ? -1.0 : std::stod(out.substr(at + 16));
+  };
+  test::CliRun r = test::run_cli(base);
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("(the noisy input)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("scale from the results; the noisy input saturates"), std::string::npos) << r.out;
+  const double from_results = top(r.out);
+  r = test::run_cli(base + " --noisy-panel none");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("scale from all panels"), std::string::npos) << r.out;
+  const double from_all = top(r.out);
+  EXPECT_GT(from_results, 0);
+  EXPECT_GT(from_all, 2 * from_results) << r.out;
+  r = test::run_cli(base + " --noisy-panel 1");
+  EXPECT_EQ(top(r.out), from_results) << r.out;
+  r = test::run_cli(base + " --noisy-panel 4");
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find("--noisy-panel"), std::string::npos) << r.out;
+  fs::remove_all(dir);
+}

@@ -19,8 +19,9 @@
 
 namespace msmesh {
 
-/// Named viewing directions. World axes: +y is up. `front` looks from +z, `right` from +x,
-/// `top` from +y (with −z up in the picture), `iso` from the (1, 1, 1) octant.
+/// Named viewing directions, for a mesh whose up axis is +y (RenderOptions::up turns them for
+/// other up axes): `front` looks from +z, `right` from +x, `top` from +y (with −z up in the
+/// picture), `iso` from the (1, 1, 1) octant.
 enum class View { Iso, Front, Back, Left, Right, Top, Bottom };
 
 /// "iso", "front", "back", "left", "right", "top", "bottom".
@@ -28,11 +29,33 @@ std::vector<std::string> view_names();
 /// The view of a name from view_names(); throws InvalidInput (listing the names) otherwise.
 View view_from_name(const std::string& name);
 
+/// The world axis that points up in the picture. The views are defined for +y up; for another
+/// axis the world is turned so that it takes the place of +y, with front still a side view:
+///  - y: front looks from +z, right from +x (the default; OBJ, glTF, most scanners);
+///  - z: front looks from −y, right from +x (CAD, STL, Blender);
+///  - x: front looks from +z, right from −y;
+///  - −x: front from +z, right from +y; −y: front from −z, right from +x; −z: front from +y,
+///    right from +x (upside down).
+enum class UpAxis { PosX, NegX, PosY, NegY, PosZ, NegZ };
+
+/// "x", "-x", "y", "-y", "z", "-z".
+std::vector<std::string> up_axis_names();
+/// The axis of a name from up_axis_names() ("+x" too); throws InvalidInput otherwise.
+UpAxis up_axis_from_name(const std::string& name);
+/// The name of an axis ("x", "-y", ...).
+std::string up_axis_name(UpAxis axis);
+
 enum class Projection { Orthographic, Perspective };
 
 struct RenderOptions {
   int width = 800, height = 600;  ///< output size in pixels, each in [1, 16384]
   View view = View::Iso;
+  UpAxis up = UpAxis::PosY;  ///< world axis shown upwards
+  /// Camera rotation from the named view: azimuth turns the camera about the up axis
+  /// (counter-clockwise seen from above), then elevation raises it (towards the up axis; negative
+  /// lowers it), both in degrees. 0 and 0 leave the view as named.
+  double azimuth_deg = 0;
+  double elevation_deg = 0;
   Projection projection = Projection::Orthographic;
   double fov_deg = 30;   ///< perspective only: field of view in (0, 120) degrees (sets the distance)
   int supersample = 2;   ///< s: s×s samples per pixel, averaged (anti-aliasing); in [1, 4]
@@ -54,13 +77,17 @@ struct RenderOptions {
   void validate() const;
 };
 
-/// The numeric RenderOptions with their ranges (parameters.h), shared by validate() and the
-/// CLI's --size, --supersample and --line-width.
+/// The numeric RenderOptions with their ranges (parameters.h), shared by validate(), the CLI's
+/// --size, --supersample, --line-width, --azimuth and --elevation and Python's keywords.
 const ParameterTable<RenderOptions>& render_parameters();
 
 /// What to draw on the mesh besides its shaded faces.
 struct MeshStyle {
   Eigen::MatrixXd face_colors;  ///< empty, or #F by 3 RGB in [0,1] (shaded like the base colour)
+  /// Empty, or #V by 3 RGB in [0,1]: colours of the vertices (a scan's own colours),
+  /// interpolated across each face and shaded like the base colour. At most one of
+  /// face_colors and vertex_colors may be given.
+  Eigen::MatrixXd vertex_colors;
   /// #L by 2 vertex pairs: edges of F drawn as lines of RenderOptions::line_width, unshaded,
   /// on the faces next to them (so they are hidden exactly where those faces are).
   Eigen::MatrixXi lines;
@@ -68,8 +95,8 @@ struct MeshStyle {
 };
 
 /// Renders (V, F) (#V by 3, #F by 3) into an options.width by options.height image. Throws
-/// InvalidInput for an invalid mesh or options, face_colors of the wrong size, or a line that
-/// is not an edge of F (naming it). A mesh without faces gives the background.
+/// InvalidInput for an invalid mesh or options, face_colors or vertex_colors of the wrong size
+/// (or both given), or a line that is not an edge of F (naming it). A mesh without faces gives the background.
 Image render_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const MeshStyle& style = {},
                   const RenderOptions& options = {});
 

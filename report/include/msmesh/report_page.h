@@ -1,13 +1,14 @@
 // The HTML report: one self-contained page with an interactive three.js viewer (the bundle in
-// report/dist/viewer.js, embedded into the program at build time), the parameters, the error
-// figures and the convergence plots.
+// report/dist/viewer.js, embedded at build time), the parameters, the error figures and the
+// convergence plots. The report library (msmesh_report, report/) makes the pages of the CLI's
+// --report options and of msmesh.report() in Python.
 #pragma once
 #include <Eigen/Core>
 #include <string>
 #include <utility>
 #include <vector>
 
-namespace msmesh::cli {
+namespace msmesh {
 
 /// One mesh of the report's 3D viewer.
 struct ReportMesh {
@@ -53,8 +54,8 @@ std::string report_html(const ReportData& data);
 /// Writes report_html(data) to `path` atomically. Throws IoError naming the file.
 void write_report(const std::string& path, const ReportData& data);
 
-/// The viewer's JavaScript bundle (report/dist/viewer.js) as embedded in this program.
+/// The viewer's JavaScript bundle (report/dist/viewer.js) as embedded in the library.
 /// Throws IoError when the build did not embed it and it cannot be read from the source tree.
 const std::string& report_viewer_script();
 
-}  // namespace msmesh::cli
+}  // namespace msmesh

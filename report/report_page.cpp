@@ -1,4 +1,4 @@
-#include "report_page.h"
+#include "msmesh/report_page.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +9,11 @@
 #include <fstream>
 #include <sstream>
 
-#include "figures.h"
-#include "json.h"
+#include "msmesh/color_map.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
+#include "msmesh/json_writer.h"
+#include "msmesh/mesh_coloring.h"
 #include "msmesh/topology.h"
 
 // The viewer bundle, embedded at build time (see report/README.md): CMake reads
@@ -23,7 +24,7 @@
 #define MSMESH_HAVE_EMBEDDED_VIEWER 1
 #endif
 
-namespace msmesh::cli {
+namespace msmesh {
 
 namespace {
 
@@ -415,4 +416,4 @@ void write_report(const std::string& path, const ReportData& data) {
   write_text_file(path, html);
 }
 
-}  // namespace msmesh::cli
+}  // namespace msmesh
