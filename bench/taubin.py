@@ -93,7 +93,12 @@ def taubin(V, F, iterations=10):
         raise RuntimeError(missing_reason())
     m = o3d.geometry.TriangleMesh(o3d.utility.Vector3dVector(V), o3d.utility.Vector3iVector(F))
     s = m.filter_smooth_taubin(number_of_iterations=iterations)
-    return np.asarray(s.vertices)
+    out = np.asarray(s.vertices).copy()
+    # Open3D divides by the neighbour count: a vertex of no face becomes NaN. It has nothing to
+    # smooth towards, so it keeps its position (it is in no face, so no score sees it).
+    bad = ~np.isfinite(out).all(axis=1)
+    out[bad] = V[bad]
+    return out
 
 
 def smooth_file(src, dst, iterations=10):
