@@ -9,6 +9,7 @@ the truth's bytes and the method, so a changed input misses the cache. Reruns th
 msmesh's default (and the --methods rows). --refresh recomputes them (for example after a change
 to the bilateral method), --no-cache does not read or write the file.
 """
+import fcntl
 import hashlib
 import json
 import math
@@ -42,8 +43,8 @@ class Cache:
     """Scores by key, in a JSON file written atomically (a temporary file renamed over it)."""
 
     def __init__(self, path, read=True, write=True):
-        self.path, self.write = path, write
-        self.data = {}
+        self.path, self.write, self.read = path, write, read
+        self.data, self.mine = {}, set()
         self.lock = threading.Lock()
         self.hits = self.misses = 0
         if path and read and os.path.exists(path):
@@ -59,7 +60,7 @@ class Cache:
 
     def get(self, key):
         with self.lock:
-            v = self.data.get(key)
+            v = self.data.get(key) if (self.read or key in self.mine) else None
             if v is None:
                 self.misses += 1
             else:
@@ -69,9 +70,21 @@ class Cache:
     def put(self, key, value):
         with self.lock:
             self.data[key] = value
-            if self.path and self.write:
-                d = os.path.dirname(os.path.abspath(self.path))
-                os.makedirs(d, exist_ok=True)
+            self.mine.add(key)
+            if not (self.path and self.write):
+                return
+            d = os.path.dirname(os.path.abspath(self.path))
+            os.makedirs(d, exist_ok=True)
+            # Two benchmarks may share the file: under a lock, merge what the other wrote.
+            with open(self.path + ".lock", "w") as lock:
+                fcntl.flock(lock, fcntl.LOCK_EX)
+                try:
+                    with open(self.path) as f:
+                        disk = json.load(f)
+                except (OSError, ValueError):
+                    disk = {}
+                disk.update(self.data)
+                self.data = disk
                 fd, tmp = tempfile.mkstemp(dir=d, prefix=".bench_cache.")
                 with os.fdopen(fd, "w") as f:
                     json.dump(self.data, f, indent=0, sort_keys=True)
