@@ -9,9 +9,8 @@ here (OBJ or OFF, triangles), not by Open3D, so that the vertex and face order s
 input and the result can be scored against the ground truth face by face (`msmesh eval`).
 """
 import argparse
+import importlib
 import sys
-
-import numpy as np
 
 _O3D = None
 _O3D_ERROR = None
@@ -22,7 +21,8 @@ def open3d_module():
     global _O3D, _O3D_ERROR
     if _O3D is None and _O3D_ERROR is None:
         try:
-            import open3d  # noqa: PLC0415 (imported lazily: it takes a second or two)
+            importlib.import_module("numpy")  # Open3D needs it, and so does this file
+            import open3d  # imported lazily: it takes a second or two
 
             _O3D = open3d
         except Exception as e:  # ImportError, or a broken install
@@ -40,6 +40,8 @@ def missing_reason():
 
 def read_mesh(path):
     """(V float64 n x 3, F int32 m x 3) of a triangle OBJ or OFF file, in file order."""
+    import numpy as np
+
     with open(path, "r", errors="replace") as f:
         text = f.read()
     if path.lower().endswith(".off"):
@@ -88,6 +90,8 @@ def write_obj(path, V, F):
 
 
 def taubin(V, F, iterations=10):
+    import numpy as np
+
     o3d = open3d_module()
     if o3d is None:
         raise RuntimeError(missing_reason())
