@@ -33,6 +33,10 @@ constexpr double kAlphaTimesSigma = 0.75;
 constexpr double kAlphaMinCad = 2.0, kAlphaMinSmooth = 1.5, kAlphaMax = 5.0;
 constexpr double kPrefilterFrom = 0.1, kPrefilterSlope = 8.0;
 constexpr int kPrefilterMax = 5;
+//   ω₂ (smooth class) = preset smooth's ω₂ × clamp((σ − kFairnessFrom) / kFairnessSpan, kFairnessMinShare, 1):
+//   the fairness term (v ≈ 1 everywhere on organic shapes) flattens curvature the input still has,
+//   so it is weak at low noise and reaches its full weight at σ 0.4.
+constexpr double kFairnessFrom = 0.1, kFairnessSpan = 0.3, kFairnessMinShare = 0.1;
 
 int prefilter_for(double sigma) {
   return static_cast<int>(
@@ -90,6 +94,8 @@ DenoiseOptions adaptive_options(const std::string& shape_class, double sigma) {
   const double alpha_min = shape_class == "cad" ? kAlphaMinCad : kAlphaMinSmooth;
   o.normals.alpha = sigma > 0 ? std::clamp(kAlphaTimesSigma / sigma, alpha_min, kAlphaMax) : kAlphaMax;
   o.prefilter_iterations = prefilter_for(sigma);
+  if (shape_class == "smooth")
+    o.vertices.omega2 *= std::clamp((sigma - kFairnessFrom) / kFairnessSpan, kFairnessMinShare, 1.0);
   return o;
 }
 

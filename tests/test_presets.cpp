@@ -115,10 +115,13 @@ TEST(Presets, AdaptiveOptionsFollowTheNoise) {
       EXPECT_LE(o.normals.alpha, 5.0);
       EXPECT_GE(o.prefilter_iterations, 0);
       EXPECT_LE(o.prefilter_iterations, 5);
-      // Everything but α and the pre-filter is the class's preset.
+      // Everything but α, the pre-filter and (smooth) the fairness weight is the class's preset.
       DenoiseOptions p = preset_options(cls);
       p.normals.alpha = o.normals.alpha;
       p.prefilter_iterations = o.prefilter_iterations;
+      EXPECT_LE(o.vertices.omega2, p.vertices.omega2);
+      EXPECT_GE(o.vertices.omega2, 0.1 * p.vertices.omega2);
+      p.vertices.omega2 = o.vertices.omega2;
       expect_same_parameters(denoise_parameters(), o, p, std::string(cls) + " at " + std::to_string(sigma));
     }
     const DenoiseOptions o = adaptive_options("cad", sigma);
@@ -128,6 +131,8 @@ TEST(Presets, AdaptiveOptionsFollowTheNoise) {
     last_prefilter = o.prefilter_iterations;
   }
   EXPECT_EQ(adaptive_options("cad", 0.05).prefilter_iterations, 0);  // low noise: the input's own normals
+  EXPECT_LT(adaptive_options("smooth", 0.1).vertices.omega2, adaptive_options("smooth", 0.5).vertices.omega2);
+  EXPECT_EQ(adaptive_options("cad", 0.1).vertices.omega2, preset_options("cad").vertices.omega2);
   EXPECT_GT(adaptive_options("cad", 0.6).prefilter_iterations, 0);
   EXPECT_THROW(adaptive_options("organic", 0.3), InvalidInput);
   EXPECT_THROW(adaptive_options("cad", -1), InvalidInput);
