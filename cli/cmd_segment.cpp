@@ -14,6 +14,7 @@
 #include "msmesh/denoise.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
+#include "msmesh/mesh_attributes.h"
 #include "msmesh/parameters.h"
 #include "msmesh/presets.h"
 #include "msmesh/segment.h"
@@ -50,14 +51,9 @@ Mesh extract_part(const Mesh& m, const Eigen::VectorXi& labels, int label) {
     }
   part.V.resize(static_cast<Eigen::Index>(used.size()), 3);
   for (size_t i = 0; i < used.size(); ++i) part.V.row(i) = m.V.row(used[i]);
-  if (m.vertex_colors.rows() == m.V.rows()) {
-    part.vertex_colors.resize(part.V.rows(), 3);
-    for (size_t i = 0; i < used.size(); ++i) part.vertex_colors.row(i) = m.vertex_colors.row(used[i]);
-  }
-  if (m.uv.rows() == m.V.rows()) {
-    part.uv.resize(part.V.rows(), 2);
-    for (size_t i = 0; i < used.size(); ++i) part.uv.row(i) = m.uv.row(used[i]);
-  }
+  // Every attribute follows its vertices and faces (materials, groups, texture coordinates...).
+  carry_attributes(m, part, Eigen::Map<const Eigen::VectorXi>(used.data(), static_cast<Eigen::Index>(used.size())),
+                   Eigen::Map<const Eigen::VectorXi>(faces.data(), static_cast<Eigen::Index>(faces.size())));
   return part;
 }
 
@@ -157,7 +153,7 @@ const Registrar kRegistration("segment", 70, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c =
       app.add_subcommand("segment", "Segment a mesh into piecewise-smooth parts (NMSTV edge field + multicut)");
-  c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();
+  c->add_option("input", a->input, "Input mesh (obj, off, ply, stl, gltf, glb; also .gz)")->required();
   c->add_option("-o,--output", a->output, "Output .ply with one colour per segment on its faces")->required();
   c->add_option("--labels", a->labels,
                 "Write the segment label of each face (one per line, input order; -: standard output)");
