@@ -643,3 +643,16 @@ TEST(ReadObj, RecordsThatAreNotKeptAreNamed) {
   EXPECT_EQ(notes.dropped[1], "OBJ smoothing groups ('s') are not kept (normals are recomputed)");
   EXPECT_EQ(notes.dropped[2], "1 OBJ records of unknown kind (the first 'curv') are not kept");
 }
+
+TEST(FuzzRegressions, GltfAndGzipSeedsReadValid) {
+  for (const char* fmt : {"gltf", "glb", "obj.gz"}) {
+    const auto files = files_in(kSource / "fuzz/corpus" / fmt);
+    EXPECT_GE(files.size(), 1u) << "no seed corpus for " << fmt << " (python3 fuzz/make_corpus.py)";
+    for (const fs::path& p : files) {
+      SCOPED_TRACE(p.string());
+      const msmesh::Mesh m = msmesh::read_mesh_from_memory(bytes_of(p), fmt, p.string());
+      EXPECT_EQ(msmesh::fuzz::mesh_problem(m), "");
+      EXPECT_EQ(m.F.rows(), 4);
+    }
+  }
+}
