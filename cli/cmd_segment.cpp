@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "data_notes.h"
 #include "field_files.h"
 #include "figures.h"
 #include "json.h"
@@ -71,7 +72,8 @@ void run(const Args& a) {
       .parts_folder(a.parts, "--parts");
   plan.begin();
   const auto t0 = std::chrono::steady_clock::now();
-  Mesh mesh = read_mesh(a.input);
+  ReadNotes read_notes;
+  Mesh mesh = read_mesh(a.input, read_notes);
 
   const ProgressCallback progress = make_progress_bar(a.quiet || a.json);
   double seconds_denoise = 0;
@@ -89,6 +91,11 @@ void run(const Args& a) {
   Eigen::MatrixXd colors(mesh.F.rows(), 3);
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) colors.row(f) = label_color(r.labels(f)).transpose();
   write_ply_face_colors(a.output, mesh, colors, !a.ascii);
+  Mesh written = mesh;  // the input's own face colours are replaced by the segments' (said so)
+  written.face_colors = colors;
+  std::vector<std::string> notes = data_notes(a.input, read_notes, {}, written, a.output);
+  if (mesh.face_colors.size() > 0)
+    notes.push_back(a.output + ": the input's face colours are replaced by the segment colours");
   if (!a.report.empty()) write_segment_report(a.report, a.input, mesh, o, r);
   if (!a.labels.empty()) {
     std::ostringstream os;
@@ -132,9 +139,11 @@ void run(const Args& a) {
         .add("seconds_total", seconds);
     if (!a.labels.empty()) j.add("labels", a.labels);
     if (!a.parts.empty()) j.add("parts", a.parts);
+    add_notes(j, notes);
     std::cout << j.str() << "\n";
     return;
   }
+  print_notes(notes);
   if (a.quiet) return;
   std::cout << "segmented " << a.input << " -> " << a.output << " (" << mesh.F.rows() << " faces"
             << (a.denoise_first ? ", denoised first" : "") << ")\n";

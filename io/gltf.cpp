@@ -122,7 +122,9 @@ std::vector<double> read_accessor(const std::string& path, const Model& m, int i
   const std::size_t n = a.count;
   std::vector<double> out;
   if (a.bufferView < 0) {  // no data: zeros (glTF 2.0 §3.6.2.1)
-    if (n > (std::size_t(1) << 28)) fail("count too large");
+    // Nothing in the file bounds the count: at most 2^24 values (128 MB).
+    if (n > (std::size_t(1) << 24) / static_cast<std::size_t>(components))
+      fail("count too large for an accessor without data");
     out.assign(n * static_cast<std::size_t>(components), 0.0);
     return out;
   }
