@@ -256,7 +256,7 @@ void read_gltf(const std::string& path, std::string_view data, bool glb, Soup& s
   for (std::size_t i = 0; i < model.materials.size(); ++i)
     soup.extra.material_names.push_back(model.materials[i].name.empty() ? "material " + std::to_string(i)
                                                                         : model.materials[i].name);
-  bool any_color = false, any_uv = false, any_normals = false, color4 = false;
+  bool any_color = false, any_uv = false, any_normals = false, color4 = false, uv_finite = true;
   std::size_t skipped = 0, targets = 0;
   std::vector<std::string> other_attributes;
   struct VertexData {
@@ -322,16 +322,23 @@ void read_gltf(const std::string& path, std::string_view data, bool glb, Soup& s
         VertexData& d = vd[it->second];
         if (!C.empty()) {
           std::array<double, 4> c{1, 1, 1, 1};
-          for (int j = 0; j < cc; ++j) c[static_cast<std::size_t>(j)] = std::clamp(C[i * cc + j], 0.0, 1.0);
+          for (int j = 0; j < cc; ++j) {
+            const double x = C[i * cc + j];
+            c[static_cast<std::size_t>(j)] = x >= 0 ? std::min(x, 1.0) : 0.0;  // NaN: 0
+          }
           if (d.has_color && c != d.color) ++color_conflicts;
           if (!d.has_color) d.color = c, d.has_color = true;
         }
         if (!N.empty()) {
           const std::array<double, 3> nn{N[3 * i], N[3 * i + 1], N[3 * i + 2]};
+          if (!std::isfinite(nn[0]) || !std::isfinite(nn[1]) || !std::isfinite(nn[2])) d.normal_conflict = true;
           if (d.has_normal && nn != d.normal) d.normal_conflict = true;
           if (!d.has_normal) d.normal = nn, d.has_normal = true;
         }
-        if (!T.empty()) soup.texcoord_table.push_back({T[2 * i], 1.0 - T[2 * i + 1]});
+        if (!T.empty()) {
+          uv_finite = uv_finite && std::isfinite(T[2 * i]) && std::isfinite(T[2 * i + 1]);
+          soup.texcoord_table.push_back({T[2 * i], 1.0 - T[2 * i + 1]});
+        }
       }
       // Faces.
       std::vector<std::size_t> idx;
@@ -401,7 +408,9 @@ void read_gltf(const std::string& path, std::string_view data, bool glb, Soup& s
       for (std::size_t i = 0; i < nv; ++i) soup.normals[i] = vd[i].normal;
     }
   }
-  if (!any_uv) soup.corner_texcoord.clear(), soup.texcoord_table.clear();
+  if (any_uv && !uv_finite)
+    soup.notes.dropped.emplace_back("glTF texture coordinates with a non-finite value are not kept");
+  if (!any_uv || !uv_finite) soup.corner_texcoord.clear(), soup.texcoord_table.clear();
   bool any_material = false;
   for (int m : soup.polygon_material) any_material = any_material || m >= 0;
   if (!any_material) soup.polygon_material.clear();

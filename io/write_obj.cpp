@@ -12,9 +12,8 @@ namespace msmesh::io_detail {
 std::string library_path_from(const std::string& output, const std::string& library) {
   namespace fs = std::filesystem;
   const fs::path lib(library);
-  if (lib.is_absolute()) return library;
-  // Relative to the current folder (as read_obj stores it): rewritten relative to the output's
-  // folder, so that it still names the same file.
+  // Relative to the current folder (as read_obj stores it) or absolute: written relative to
+  // the output's folder, so that it names the same file.
   const fs::path out_dir = fs::path(output).parent_path();
   std::error_code ec;
   const fs::path base = fs::absolute(out_dir.empty() ? fs::path(".") : out_dir, ec);

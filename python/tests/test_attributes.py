@@ -70,7 +70,8 @@ def test_ply_keeps_face_colours_and_typed_properties(tmp_path):
     np.testing.assert_allclose(r.face_colors, fc, atol=1e-12)
     np.testing.assert_array_equal(r.vertex_properties["quality"], np.arange(36) % 200)
     assert r.vertex_property_types == {"quality": "uint8"}
-    np.testing.assert_array_equal(r.face_texcoords, m.face_texcoords)
+    # PLY stores texture coordinates per corner (face `texcoord` lists): the same per corner.
+    np.testing.assert_array_equal(r.texcoords[r.face_texcoords], m.texcoords[m.face_texcoords])
 
 
 def test_glb_keeps_colours_uv_and_materials(tmp_path):

@@ -137,7 +137,7 @@ TEST(AttributesCli, GzipInAndOutAndBrokenGzip) {
 
 TEST(AttributesCli, InpaintedFacesTakeANeighboursMaterialAndNoUv) {
   TempDir d;
-  write_bytes(d.file("sheet.obj"), textured_obj(10));
+  write_bytes(d.file("sheet.obj"), textured_obj(20));
   ASSERT_EQ(
       run_cli("holes " + d.file("sheet.obj") + " -o " + d.file("holed.obj") + " --count 1 --radius 1.5 -q").status, 0);
   const Mesh holed = read_mesh(d.file("holed.obj"));
