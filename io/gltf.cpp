@@ -9,7 +9,8 @@
 //
 // Reading: every triangle primitive (modes TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN) of every
 // mesh gives faces; POSITION, NORMAL, COLOR_0 and TEXCOORD_0 are read (float or normalized
-// integer components), in each mesh's own coordinates (node transforms are not applied: they
+// integer components) and application-specific scalar attributes "_NAME" (extra vertex
+// properties, float32), in each mesh's own coordinates (node transforms are not applied: they
 // stay in the document and apply again when the result is shown). glTF splits vertices where
 // texture coordinates or normals differ (seams, creases); vertices of one mesh at exactly the
 // same position are joined again, so the surface is connected, and the texture coordinates
@@ -258,7 +259,9 @@ void read_gltf(const std::string& path, std::string_view data, bool glb, Soup& s
                                                                         : model.materials[i].name);
   bool any_color = false, any_uv = false, any_normals = false, color4 = false, uv_finite = true;
   std::size_t skipped = 0, targets = 0;
-  std::vector<std::string> other_attributes;
+  std::vector<std::string> other_attributes, prop_names;
+  std::vector<std::vector<double>> prop_values;
+  std::vector<std::vector<char>> prop_set;
   struct VertexData {
     std::array<double, 4> color{1, 1, 1, 1};
     std::array<double, 3> normal{0, 0, 0};
@@ -297,10 +300,30 @@ void read_gltf(const std::string& path, std::string_view data, bool glb, Soup& s
       const std::vector<double> N = attribute("NORMAL", {3}, cn);
       const std::vector<double> C = attribute("COLOR_0", {3, 4}, cc);
       const std::vector<double> T = attribute("TEXCOORD_0", {2}, ct);
-      for (const auto& [name, acc] : prim.attributes)
+      // Application-specific scalar attributes ("_NAME", glTF 2.0 §3.7.2.1) are extra vertex
+      // properties (as msmesh writes them).
+      std::vector<std::pair<std::size_t, std::vector<double>>> props;  // (property slot, values)
+      for (const auto& [name, acc] : prim.attributes) {
+        if (name.size() > 1 && name[0] == '_' && acc >= 0 && acc < static_cast<int>(model.accessors.size()) &&
+            model.accessors[static_cast<std::size_t>(acc)].type == TINYGLTF_TYPE_SCALAR) {
+          int one = 0;
+          std::vector<double> A = read_accessor(path, model, acc, one, name.c_str());
+          if (A.size() != n) throw IoError(path + ": glTF " + name + " accessor has the wrong count for its primitive");
+          const std::string pname = name.substr(1);
+          auto at = std::find(prop_names.begin(), prop_names.end(), pname);
+          if (at == prop_names.end()) {
+            prop_names.push_back(pname);
+            prop_values.emplace_back();
+            prop_set.emplace_back();
+            at = prop_names.end() - 1;
+          }
+          props.emplace_back(static_cast<std::size_t>(at - prop_names.begin()), std::move(A));
+          continue;
+        }
         if (name != "POSITION" && name != "NORMAL" && name != "COLOR_0" && name != "TEXCOORD_0" &&
             std::find(other_attributes.begin(), other_attributes.end(), name) == other_attributes.end())
           other_attributes.push_back(name);
+      }
       targets += prim.targets.size();
       any_normals = any_normals || !N.empty();
       any_color = any_color || !C.empty();
@@ -339,6 +362,12 @@ void read_gltf(const std::string& path, std::string_view data, bool glb, Soup& s
           uv_finite = uv_finite && std::isfinite(T[2 * i]) && std::isfinite(T[2 * i + 1]);
           soup.texcoord_table.push_back({T[2 * i], 1.0 - T[2 * i + 1]});
         }
+      }
+      for (auto& [slot, A] : props) {
+        prop_values[slot].resize(soup.points.size(), 0.0);
+        prop_set[slot].resize(soup.points.size(), 0);
+        for (std::size_t i = 0; i < n; ++i)
+          if (!prop_set[slot][vertex[i]]) prop_values[slot][vertex[i]] = A[i], prop_set[slot][vertex[i]] = 1;
       }
       // Faces.
       std::vector<std::size_t> idx;
@@ -398,6 +427,12 @@ void read_gltf(const std::string& path, std::string_view data, bool glb, Soup& s
       soup.alpha.resize(nv);
       for (std::size_t i = 0; i < nv; ++i) soup.alpha[i] = vd[i].color[3];
     }
+  }
+  for (std::size_t k = 0; k < prop_names.size(); ++k) {
+    prop_values[k].resize(nv, 0.0);
+    soup.extra.vertex_properties.push_back(
+        {prop_names[k], Eigen::Map<const Eigen::VectorXd>(prop_values[k].data(), static_cast<Eigen::Index>(nv)),
+         ScalarType::Float32});
   }
   if (any_normals) {
     soup.notes.had_normals = true;
@@ -488,6 +523,7 @@ void set_geometry(Model& m, std::vector<unsigned char>& bin, const Mesh& mesh, c
   const int cc = static_cast<int>(mesh.vertex_colors.cols());
   std::map<std::pair<int, int>, std::uint32_t> out_vertex;  // (vertex, texcoord) -> output vertex
   std::vector<float> P, N, C, T;
+  std::vector<std::vector<float>> X(mesh.vertex_properties.size());
   std::vector<std::uint32_t> I;
   for (int f : faces)
     for (int k = 0; k < 3; ++k) {
@@ -499,6 +535,8 @@ void set_geometry(Model& m, std::vector<unsigned char>& bin, const Mesh& mesh, c
           for (int c = 0; c < 3; ++c) N.push_back(static_cast<float>(mesh.vertex_normals(v, c)));
         if (colors)
           for (int c = 0; c < cc; ++c) C.push_back(static_cast<float>(std::clamp(mesh.vertex_colors(v, c), 0.0, 1.0)));
+        for (std::size_t p = 0; p < X.size(); ++p)
+          X[p].push_back(static_cast<float>(mesh.vertex_properties[p].values(v)));
         if (corner || vuv) {
           const double u = corner ? (t >= 0 ? mesh.texcoords(t, 0) : 0.0) : mesh.uv(v, 0);
           const double w = corner ? (t >= 0 ? mesh.texcoords(t, 1) : 0.0) : mesh.uv(v, 1);
@@ -516,6 +554,9 @@ void set_geometry(Model& m, std::vector<unsigned char>& bin, const Mesh& mesh, c
   if (colors)
     prim.attributes["COLOR_0"] = add_accessor(m, bin, C, cc == 4 ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3, cc, false);
   if (!T.empty()) prim.attributes["TEXCOORD_0"] = add_accessor(m, bin, T, TINYGLTF_TYPE_VEC2, 2, false);
+  // Extra vertex properties as application-specific attributes "_NAME" (float32).
+  for (std::size_t p = 0; p < X.size(); ++p)
+    prim.attributes["_" + mesh.vertex_properties[p].name] = add_accessor(m, bin, X[p], TINYGLTF_TYPE_SCALAR, 1, false);
   Accessor a;
   a.bufferView = add_view(m, bin, I.data(), I.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
   a.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;

@@ -95,7 +95,7 @@ std::vector<std::string> unsupported_attributes(const Mesh& m, const std::string
   lost(m.face_materials.size() > 0, obj || gltf, "materials per face");
   lost(m.face_groups.size() > 0, obj || gltf, "groups");
   lost(m.face_objects.size() > 0, obj, "objects ('o')");
-  if (!m.vertex_properties.empty() && !ply) {
+  if (!m.vertex_properties.empty() && !ply && !gltf) {
     std::string names;
     for (std::size_t k = 0; k < m.vertex_properties.size(); ++k)
       names += (k ? ", '" : "'") + m.vertex_properties[k].name + "'";

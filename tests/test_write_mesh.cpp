@@ -433,6 +433,20 @@ TEST(Attributes, GltfKeepsColoursUvSeamsAndMaterials) {
     EXPECT_EQ(r.group_names, m.group_names);
     EXPECT_TRUE(r.face_groups == m.face_groups);
     EXPECT_EQ(r.position_type, ScalarType::Float32);
+    // Extra vertex properties as "_NAME" attributes, float32 (in the order of their names).
+    ASSERT_EQ(r.vertex_properties.size(), m.vertex_properties.size());
+    for (const VertexProperty& mp : m.vertex_properties) {
+      const auto rp = std::find_if(r.vertex_properties.begin(), r.vertex_properties.end(),
+                                   [&](const VertexProperty& p) { return p.name == mp.name; });
+      ASSERT_NE(rp, r.vertex_properties.end()) << mp.name;
+      EXPECT_EQ(rp->type, ScalarType::Float32);
+      for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+        for (int k = 0; k < 3; ++k)
+          EXPECT_FLOAT_EQ(static_cast<float>(rp->values(r.F(f, k))), static_cast<float>(mp.values(m.F(f, k))));
+    }
+    EXPECT_TRUE(unsupported_attributes(m, d.file(name)) ==
+                (std::vector<std::string>{"glTF cannot hold face colours: not written",
+                                          "glTF cannot hold objects ('o'): not written"}));
     ASSERT_TRUE(r.gltf_document);
     // Written again from its own document: the same again.
     write_mesh(d.file("again." + name.substr(2)), r);
