@@ -63,9 +63,10 @@ void write_obj(OutBuffer& o, const Mesh& m, const std::string& path) {
       object = m.face_objects(f);
       o.text("o ").text(m.object_names[static_cast<std::size_t>(object)]).ch('\n');
     }
-    if (m.face_groups.size() && m.face_groups(f) >= 0 && m.face_groups(f) != group) {
+    if (m.face_groups.size() && m.face_groups(f) != group) {
+      // A face without a group after grouped ones: "g" alone, the default group.
       group = m.face_groups(f);
-      const std::string& name = m.group_names[static_cast<std::size_t>(group)];
+      const std::string name = group >= 0 ? m.group_names[static_cast<std::size_t>(group)] : std::string();
       o.text(name.empty() ? "g" : "g ").text(name).ch('\n');
     }
     if (m.face_materials.size() && m.face_materials(f) >= 0 && m.face_materials(f) != material) {
