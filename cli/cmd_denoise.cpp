@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "command.h"
+#include "data_notes.h"
 #include "field_files.h"
 #include "figures.h"
 #include "json.h"
@@ -59,10 +60,12 @@ void run(const Args& a) {
   const auto t_read0 = std::chrono::steady_clock::now();
   ReadNotes notes;
   Mesh mesh = read_mesh(a.input, notes);
-  std::vector<std::string> repairs;  // --repair: what repair_mesh did (vertex order kept)
+  std::vector<std::string> repairs;       // --repair: what repair_mesh did (vertex order kept)
+  std::vector<std::string> repair_notes;  // and what it did to the attributes
   if (a.repair) {
     const RepairReport rr = repair_mesh(mesh);
     repairs = rr.actions();
+    repair_notes = rr.attribute_notes;
     if (mesh.F.rows() == 0) throw InvalidInput(a.input + ": --repair removed every face (all are degenerate)");
   }
   const double t_read = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_read0).count();
@@ -87,13 +90,14 @@ void run(const Args& a) {
 
   const DenoiseResult r = denoise(mesh.V, mesh.F, o, make_progress_bar(a.quiet || a.json));
   finish_progress_line();
-  Mesh out = mesh;  // same faces, order, colours and uv; normals recomputed for the result
+  Mesh out = mesh;  // same faces, order and every attribute; normals recomputed for the result
   out.V = r.V;
   if (mesh.vertex_normals.size() > 0) out.vertex_normals = vertex_normals(out.V, out.F);
   const auto t_w0 = std::chrono::steady_clock::now();
   WriteOptions wo;
   wo.binary = !a.ascii;
   write_mesh(a.output, out, wo);
+  const std::vector<std::string> notes_out = data_notes(a.input, notes, repair_notes, out, a.output);
   if (!a.field.empty()) {
     write_edge_field(a.field, r.V, r.edges, r.v);
   }
@@ -123,6 +127,7 @@ void run(const Args& a) {
     j.add("strength", preset.strength);
     j.add("vertices", static_cast<long long>(mesh.V.rows())).add("faces", static_cast<long long>(mesh.F.rows()));
     j.add("dropped_degenerate_faces", static_cast<long long>(notes.dropped_degenerate));
+    add_notes(j, notes_out);
     if (a.repair) {
       std::vector<Json> done;
       for (const std::string& line : repairs) done.push_back(Json().add("action", line));
@@ -163,8 +168,7 @@ void run(const Args& a) {
   if (notes.dropped_degenerate > 0)
     std::cout << "  note: " << notes.dropped_degenerate << " face(s) repeating a vertex were dropped on reading\n";
   for (const std::string& line : repairs) std::cout << "  repair: " << line << "\n";
-  if (notes.uv_dropped)
-    std::cout << "  note: the input's texture coordinates have seams (not per-vertex) and were not carried over\n";
+  print_notes(notes_out);
   if (a.quiet) return;  // notes of what was dropped or repaired print even then
   std::cout << "  method " << a.method;
   if (o.method != DenoiseMethod::Bilateral) {
@@ -202,7 +206,7 @@ void run(const Args& a) {
 const Registrar kRegistration("denoise", 50, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("denoise", "Denoise a mesh: NMSTV normal filtering + vertex updating");
-  c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();
+  c->add_option("input", a->input, "Input mesh (obj, off, ply, stl, gltf, glb; also .gz)")->required();
   c->add_option("-o,--output", a->output, "Output mesh; format from the extension")->required();
   std::vector<std::string> presets = preset_names();
   presets.insert(presets.begin(), "auto");

@@ -81,7 +81,7 @@ void run(const Args& a) {
 const Registrar kRegistration("eval", 40, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("eval", "Error figures of a result against a ground-truth mesh");
-  c->add_option("result", a->result, "Result mesh (obj, off, ply, stl)")->required();
+  c->add_option("result", a->result, "Result mesh (obj, off, ply, stl, gltf, glb; also .gz)")->required();
   c->add_option("--truth", a->truth, "Ground-truth mesh")->required();
   c->add_flag("--json", a->json, "Print one JSON object instead of the summary");
   add_quiet_flag(c, a->quiet);

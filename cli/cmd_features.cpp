@@ -70,7 +70,7 @@ void run(const Args& a) {
 const Registrar kRegistration("features", 75, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("features", "Extract feature lines where the NMSTV edge field is low");
-  c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();
+  c->add_option("input", a->input, "Input mesh (obj, off, ply, stl, gltf, glb; also .gz)")->required();
   c->add_option("-o,--output", a->output, "Output polylines: .obj (v/l records) or .ply (edges)")->required();
   using T = ParameterType;
   add_number_option(c, "--threshold", a->threshold, cli_number("features", "threshold", T::Real, {0, 1, true, false}),

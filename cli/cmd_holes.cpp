@@ -4,9 +4,11 @@
 #include <sstream>
 
 #include "command.h"
+#include "data_notes.h"
 #include "json.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
+#include "msmesh/mesh_attributes.h"
 #include "msmesh/punch_holes.h"
 #include "number_option.h"
 #include "output_plan.h"
@@ -28,7 +30,8 @@ void run(const Args& a) {
   plan.input(a.input).in_place(a.in_place);
   plan.output(a.output, OutputKind::Mesh, "-o").output(a.map, OutputKind::Text, "--map");
   plan.begin();
-  const Mesh mesh = read_mesh(a.input);
+  ReadNotes read_notes;
+  const Mesh mesh = read_mesh(a.input, read_notes);
   const PunchResult r =
       punch_holes(mesh.V, mesh.F, a.count, a.radius, static_cast<std::uint64_t>(a.seed), a.on_features);
   if (r.F.rows() == 0)
@@ -38,17 +41,11 @@ void run(const Args& a) {
   Mesh out;
   out.V = r.V;
   out.F = r.F;
-  if (mesh.vertex_colors.rows() == mesh.V.rows() && mesh.V.rows() > 0) {
-    out.vertex_colors.resize(r.V.rows(), 3);
-    for (Eigen::Index i = 0; i < r.V.rows(); ++i) out.vertex_colors.row(i) = mesh.vertex_colors.row(r.vertex_map(i));
-  }
-  if (mesh.uv.rows() == mesh.V.rows() && mesh.V.rows() > 0) {
-    out.uv.resize(r.V.rows(), 2);
-    for (Eigen::Index i = 0; i < r.V.rows(); ++i) out.uv.row(i) = mesh.uv.row(r.vertex_map(i));
-  }
+  const std::vector<std::string> carried = carry_attributes(mesh, out, r.vertex_map, r.face_map);
   WriteOptions wo;
   wo.binary = !a.ascii;
   write_mesh(a.output, out, wo);
+  const std::vector<std::string> notes = data_notes(a.input, read_notes, carried, out, a.output);
   if (!a.map.empty()) {
     std::ostringstream os;
     os << "# input vertex index of each output vertex (one per line)\n";
@@ -69,9 +66,11 @@ void run(const Args& a) {
         .add("removed_vertices", static_cast<long long>(mesh.V.rows() - r.V.rows()));
     std::vector<double> centers(r.centers.begin(), r.centers.end());
     j.add("centers", centers);
+    add_notes(j, notes);
     std::cout << j.str() << "\n";
     return;
   }
+  print_notes(notes);
   if (a.quiet) return;
   std::cout << "punched " << r.punched << " of " << a.count << " holes (radius " << fmt(a.radius)
             << " mean edge lengths" << (a.on_features ? ", on sharp features" : "") << ", seed " << a.seed
@@ -87,7 +86,7 @@ void run(const Args& a) {
 const Registrar kRegistration("holes", 85, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("holes", "Punch holes (geodesic disks) into a mesh, for inpainting tests");
-  c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();
+  c->add_option("input", a->input, "Input mesh (obj, off, ply, stl, gltf, glb; also .gz)")->required();
   c->add_option("-o,--output", a->output, "Output mesh with holes")->required();
   using T = ParameterType;
   add_number_option(c, "--count", a->count, cli_number("holes", "count", T::Integer, {1, 100000}), "Number of holes");

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "data_notes.h"
 #include "field_files.h"
 #include "figures.h"
 #include "json.h"
@@ -12,6 +13,7 @@
 #include "msmesh/geometry.h"
 #include "msmesh/inpaint.h"
 #include "msmesh/io.h"
+#include "msmesh/mesh_attributes.h"
 #include "msmesh/metrics.h"
 #include "msmesh/parameters.h"
 #include "number_option.h"
@@ -106,7 +108,8 @@ void run(const Args& a) {
   plan.input(a.input).input(a.truth, "--truth").in_place(a.in_place);
   plan.output(a.output, OutputKind::Mesh, "-o").output(a.report, OutputKind::Text, "--report");
   plan.begin();
-  const Mesh mesh = read_mesh(a.input);
+  ReadNotes read_notes;
+  const Mesh mesh = read_mesh(a.input, read_notes);
   Mesh truth;
   if (!a.truth.empty()) truth = read_mesh(a.truth);
 
@@ -117,18 +120,18 @@ void run(const Args& a) {
   out.V = r.V;
   out.F = r.F;
   const Eigen::Index added = r.V.rows() - mesh.V.rows();
-  if (mesh.vertex_colors.rows() == mesh.V.rows() && mesh.V.rows() > 0) {
-    // New vertices take the mean colour; texture coordinates cannot be invented, so they are
-    // kept only when no vertex was added.
-    out.vertex_colors.resize(r.V.rows(), 3);
-    out.vertex_colors.topRows(mesh.V.rows()) = mesh.vertex_colors;
-    if (added > 0) out.vertex_colors.bottomRows(added).rowwise() = mesh.vertex_colors.colwise().mean();
-  }
-  if (added == 0) out.uv = mesh.uv;
+  // Input vertices and faces keep their rows (inpaint.h); the new ones take the values of their
+  // nearest input neighbours, and new faces get no texture coordinates (said in a note).
+  Eigen::VectorXi vertex_origin = Eigen::VectorXi::Constant(r.V.rows(), -1);
+  Eigen::VectorXi face_origin = Eigen::VectorXi::Constant(r.F.rows(), -1);
+  vertex_origin.head(mesh.V.rows()).setLinSpaced(mesh.V.rows(), 0, static_cast<int>(mesh.V.rows()) - 1);
+  face_origin.head(mesh.F.rows()).setLinSpaced(mesh.F.rows(), 0, static_cast<int>(mesh.F.rows()) - 1);
+  const std::vector<std::string> carried = carry_attributes(mesh, out, vertex_origin, face_origin);
   if (mesh.vertex_normals.size() > 0) out.vertex_normals = vertex_normals(out.V, out.F);
   WriteOptions wo;
   wo.binary = !a.ascii;
   write_mesh(a.output, out, wo);
+  const std::vector<std::string> notes = data_notes(a.input, read_notes, carried, out, a.output);
 
   InpaintErrors err;
   if (!a.truth.empty()) err = inpaint_errors(mesh.V, mesh.F, r.V, r.F, r.new_faces, truth.V, truth.F);
@@ -163,6 +166,7 @@ void run(const Args& a) {
       hs.push_back(h);
     }
     j.add("holes", hs);
+    add_notes(j, notes);
     j.add("parameters", parameters_json(inpaint_parameters(), o));
     j.add("seconds_fill", r.seconds_fill).add("seconds_features", r.seconds_features);
     if (!a.truth.empty()) j.add("truth", a.truth).add("errors", errors_json(err));
@@ -170,6 +174,7 @@ void run(const Args& a) {
     return;
   }
 
+  print_notes(notes);
   if (a.quiet) return;
   if (r.holes.empty()) {
     std::cout << a.input << " has no holes: " << a.output << " is the input mesh unchanged (" << mesh.V.rows()
@@ -222,7 +227,7 @@ const Registrar kRegistration("inpaint", 80, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand(
       "inpaint", "Fill holes (CGAL fill-and-fair) and recover their sharp features with NMSTV (paper 6.2)");
-  c->add_option("input", a->input, "Input mesh with holes (obj, off, ply, stl)")->required();
+  c->add_option("input", a->input, "Input mesh with holes (obj, off, ply, stl, gltf, glb; also .gz)")->required();
   c->add_option("-o,--output", a->output, "Output mesh; format from the extension");
   const ParameterInfo hole = cli_number("inpaint", "holes", ParameterType::Integer, {0, 2147483647});
   c->add_option_function<std::vector<std::string>>(

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "command.h"
+#include "data_notes.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/io.h"
@@ -27,7 +28,8 @@ void run(const Args& a) {
   plan.input(a.input).in_place(a.in_place).output(a.output, OutputKind::Mesh, "-o");
   plan.begin();
 
-  Mesh mesh = read_mesh(a.input);
+  ReadNotes read_notes;
+  Mesh mesh = read_mesh(a.input, read_notes);
   const Eigen::MatrixXd V = add_noise(mesh.V, mesh.F, o);
   Eigen::Index moved = 0;
   for (Eigen::Index i = 0; i < V.rows(); ++i) moved += V.row(i) != mesh.V.row(i) ? 1 : 0;
@@ -38,6 +40,7 @@ void run(const Args& a) {
   wo.binary = !a.ascii;
   write_mesh(a.output, mesh, wo);
   plan.commit();
+  print_notes(data_notes(a.input, read_notes, {}, mesh, a.output));
 
   if (a.quiet) return;
   std::cout << "noise: " << a.input << " -> " << a.output << ": "
@@ -51,7 +54,7 @@ const Registrar kRegistration("noise", 30, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand(
       "noise", "Add seeded noise as in the denoising literature (sigma in units of the mean edge length)");
-  c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();
+  c->add_option("input", a->input, "Input mesh (obj, off, ply, stl, gltf, glb; also .gz)")->required();
   c->add_option("-o,--output", a->output, "Output mesh; format from the extension")->required();
   const ParameterTable<NoiseOptions>& table = noise_parameters();
   add_number_option(c, "--sigma", table[0], a->options, "Standard deviation, a multiple of the mean edge length");

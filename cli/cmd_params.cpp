@@ -96,7 +96,7 @@ void run(Args a) {
 const Registrar kRegistration("params", 55, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c = app.add_subcommand("params", "Print the parameters a preset (or, for a mesh, preset auto) gives");
-  c->add_option("mesh", a->mesh, "Mesh to resolve --preset auto for (obj, off, ply, stl)");
+  c->add_option("mesh", a->mesh, "Mesh to resolve --preset auto for (obj, off, ply, stl, gltf, glb; also .gz)");
   std::vector<std::string> presets = preset_names();
   presets.insert(presets.begin(), "auto");
   c->add_option("--preset", a->preset,

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "command.h"
+#include "data_notes.h"
 #include "json.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
@@ -37,8 +38,9 @@ void run(const Args& a) {
   plan.input(a.input).in_place(a.in_place).output(a.dry_run ? std::string() : a.output, OutputKind::Mesh, "-o");
   plan.begin();
 
-  Eigen::Index dropped = 0;
-  Mesh mesh = read_mesh(a.input, &dropped);
+  ReadNotes read_notes;
+  Mesh mesh = read_mesh(a.input, read_notes);
+  const Eigen::Index dropped = read_notes.dropped_degenerate;
   const RepairReport r = repair_mesh(mesh, o);
   if (r.faces_after == 0)
     throw InvalidInput(a.input + ": repair removed every face (all " + std::to_string(r.faces_before) +
@@ -49,8 +51,9 @@ void run(const Args& a) {
     write_mesh(a.output, mesh, wo);
   }
   plan.commit();
+  const std::vector<std::string> notes =
+      data_notes(a.input, read_notes, r.attribute_notes, mesh, a.dry_run ? std::string() : a.output);
 
-  if (a.quiet) return;
   if (a.json) {
     Json j;
     j.add("input", a.input)
@@ -73,9 +76,12 @@ void run(const Args& a) {
         .add("non_manifold_edges", static_cast<long long>(r.non_manifold_edges))
         .add("non_manifold_vertices", static_cast<long long>(r.non_manifold_vertices))
         .add("unreferenced_vertices", static_cast<long long>(r.unreferenced_vertices));
-    std::cout << j.str() << "\n";
+    add_notes(j, notes);
+    if (!a.quiet) std::cout << j.str() << "\n";
     return;
   }
+  print_notes(notes);
+  if (a.quiet) return;
   std::cout << "repaired " << a.input << " -> " << (a.dry_run ? std::string("(dry run, nothing written)") : a.output)
             << " (" << r.vertices_before << " -> " << r.vertices_after << " vertices, " << r.faces_before << " -> "
             << r.faces_after << " faces)\n";
@@ -100,7 +106,7 @@ const Registrar kRegistration("repair", 45, [](CLI::App& app) {
       "repair",
       "Fix duplicate vertices, degenerate and duplicate faces, orientation (and optionally non-manifold parts and "
       "unreferenced vertices); vertex order is kept unless --remove-unreferenced");
-  c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();
+  c->add_option("input", a->input, "Input mesh (obj, off, ply, stl, gltf, glb; also .gz)")->required();
   c->add_option("-o,--output", a->output, "Output mesh; format from the extension");
   add_number_option(c, "--weld", a->weld, repair_parameters()[0].info,
                     "Merge vertices closer than this (0: exact duplicates only)");

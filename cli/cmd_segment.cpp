@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "data_notes.h"
 #include "field_files.h"
 #include "figures.h"
 #include "json.h"
@@ -14,6 +15,7 @@
 #include "msmesh/denoise.h"
 #include "msmesh/errors.h"
 #include "msmesh/io.h"
+#include "msmesh/mesh_attributes.h"
 #include "msmesh/parameters.h"
 #include "msmesh/presets.h"
 #include "msmesh/segment.h"
@@ -50,14 +52,9 @@ Mesh extract_part(const Mesh& m, const Eigen::VectorXi& labels, int label) {
     }
   part.V.resize(static_cast<Eigen::Index>(used.size()), 3);
   for (size_t i = 0; i < used.size(); ++i) part.V.row(i) = m.V.row(used[i]);
-  if (m.vertex_colors.rows() == m.V.rows()) {
-    part.vertex_colors.resize(part.V.rows(), 3);
-    for (size_t i = 0; i < used.size(); ++i) part.vertex_colors.row(i) = m.vertex_colors.row(used[i]);
-  }
-  if (m.uv.rows() == m.V.rows()) {
-    part.uv.resize(part.V.rows(), 2);
-    for (size_t i = 0; i < used.size(); ++i) part.uv.row(i) = m.uv.row(used[i]);
-  }
+  // Every attribute follows its vertices and faces (materials, groups, texture coordinates...).
+  carry_attributes(m, part, Eigen::Map<const Eigen::VectorXi>(used.data(), static_cast<Eigen::Index>(used.size())),
+                   Eigen::Map<const Eigen::VectorXi>(faces.data(), static_cast<Eigen::Index>(faces.size())));
   return part;
 }
 
@@ -75,7 +72,8 @@ void run(const Args& a) {
       .parts_folder(a.parts, "--parts");
   plan.begin();
   const auto t0 = std::chrono::steady_clock::now();
-  Mesh mesh = read_mesh(a.input);
+  ReadNotes read_notes;
+  Mesh mesh = read_mesh(a.input, read_notes);
 
   const ProgressCallback progress = make_progress_bar(a.quiet || a.json);
   double seconds_denoise = 0;
@@ -93,6 +91,11 @@ void run(const Args& a) {
   Eigen::MatrixXd colors(mesh.F.rows(), 3);
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) colors.row(f) = label_color(r.labels(f)).transpose();
   write_ply_face_colors(a.output, mesh, colors, !a.ascii);
+  Mesh written = mesh;  // the input's own face colours are replaced by the segments' (said so)
+  written.face_colors = colors;
+  std::vector<std::string> notes = data_notes(a.input, read_notes, {}, written, a.output);
+  if (mesh.face_colors.size() > 0)
+    notes.push_back(a.output + ": the input's face colours are replaced by the segment colours");
   if (!a.report.empty()) write_segment_report(a.report, a.input, mesh, o, r);
   if (!a.labels.empty()) {
     std::ostringstream os;
@@ -136,9 +139,11 @@ void run(const Args& a) {
         .add("seconds_total", seconds);
     if (!a.labels.empty()) j.add("labels", a.labels);
     if (!a.parts.empty()) j.add("parts", a.parts);
+    add_notes(j, notes);
     std::cout << j.str() << "\n";
     return;
   }
+  print_notes(notes);
   if (a.quiet) return;
   std::cout << "segmented " << a.input << " -> " << a.output << " (" << mesh.F.rows() << " faces"
             << (a.denoise_first ? ", denoised first" : "") << ")\n";
@@ -157,7 +162,7 @@ const Registrar kRegistration("segment", 70, [](CLI::App& app) {
   auto a = std::make_shared<Args>();
   CLI::App* c =
       app.add_subcommand("segment", "Segment a mesh into piecewise-smooth parts (NMSTV edge field + multicut)");
-  c->add_option("input", a->input, "Input mesh (obj, off, ply, stl)")->required();
+  c->add_option("input", a->input, "Input mesh (obj, off, ply, stl, gltf, glb; also .gz)")->required();
   c->add_option("-o,--output", a->output, "Output .ply with one colour per segment on its faces")->required();
   c->add_option("--labels", a->labels,
                 "Write the segment label of each face (one per line, input order; -: standard output)");

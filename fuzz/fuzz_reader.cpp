@@ -1,8 +1,8 @@
 // libFuzzer target for one mesh reader: the bytes are read as a file of format
-// MSMESH_FUZZ_FORMAT ("obj", "off", "ply", "stl"; a compile definition, one program per
-// format). A reader may refuse the input with IoError or InvalidInput; anything else (another
-// exception, a crash, a sanitizer report, a hang, a mesh that breaks read_mesh's promises)
-// is a finding.
+// MSMESH_FUZZ_FORMAT ("obj", "off", "ply", "stl", "gltf", "glb", or "obj.gz": gzip inflated
+// then read as OBJ; a compile definition, one program per format). A reader may refuse the
+// input with IoError or InvalidInput; anything else (another exception, a crash, a sanitizer
+// report, a hang, a mesh that breaks read_mesh's promises) is a finding.
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>

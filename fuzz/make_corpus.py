@@ -228,9 +228,66 @@ def stl_files():
     }
 
 
+def gltf_parts(vertices, faces, uv=None, colors=None):
+    """The JSON document (without buffer uri) and the binary buffer of a glTF mesh."""
+    import json
+    bin_ = b"".join(struct.pack("<3f", *v) for v in vertices)
+    views = [{"buffer": 0, "byteOffset": 0, "byteLength": len(bin_)}]
+    acc = [{"bufferView": 0, "componentType": 5126, "count": len(vertices), "type": "VEC3",
+            "min": [min(v[i] for v in vertices) for i in range(3)],
+            "max": [max(v[i] for v in vertices) for i in range(3)]}]
+    attributes = {"POSITION": 0}
+    for name, rows, kind, fmt in (("TEXCOORD_0", uv, "VEC2", "<2f"), ("COLOR_0", colors, "VEC4", "<4B")):
+        if rows:
+            data = b"".join(struct.pack(fmt, *r) for r in rows)
+            views.append({"buffer": 0, "byteOffset": len(bin_), "byteLength": len(data)})
+            bin_ += data
+            acc.append({"bufferView": len(views) - 1, "componentType": 5126 if fmt == "<2f" else 5121,
+                        "count": len(rows), "type": kind, "normalized": fmt != "<2f"})
+            attributes[name] = len(acc) - 1
+    idx = b"".join(struct.pack("<3H", *f) for f in faces)
+    views.append({"buffer": 0, "byteOffset": len(bin_), "byteLength": len(idx)})
+    bin_ += idx
+    acc.append({"bufferView": len(views) - 1, "componentType": 5123, "count": 3 * len(faces), "type": "SCALAR"})
+    doc = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+           "meshes": [{"primitives": [{"attributes": attributes, "indices": len(acc) - 1, "material": 0}]}],
+           "materials": [{"name": "m"}], "buffers": [{"byteLength": len(bin_)}], "bufferViews": views,
+           "accessors": acc}
+    return doc, bin_
+
+
+def gltf_files():
+    import base64
+    import json
+    out = {}
+    uv = [(0, 0), (1, 0), (0, 1), (1, 1)]
+    for name, kw in (("tet.gltf", {}), ("tet_uv_colors.gltf", {"uv": uv, "colors": [c + (255,) for c in COLORS]})):
+        doc, bin_ = gltf_parts(TET_V, TET_F, **kw)
+        doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(bin_).decode()
+        out[name] = json.dumps(doc)
+    return out
+
+
+def glb_files():
+    import json
+    doc, bin_ = gltf_parts(TET_V, TET_F, uv=[(0, 0), (1, 0), (0, 1), (1, 1)])
+    js = json.dumps(doc).encode()
+    js += b" " * (-len(js) % 4)
+    bin_ += b"\0" * (-len(bin_) % 4)
+    body = struct.pack("<I4s", len(js), b"JSON") + js + struct.pack("<I4s", len(bin_), b"BIN\0") + bin_
+    return {"tet.glb": struct.pack("<4sII", b"glTF", 2, 12 + len(body)) + body}
+
+
+def gz_files():
+    import gzip
+    # mtime 0: deterministic bytes.
+    return {name + ".gz": gzip.compress(data.encode(), mtime=0) for name, data in obj_files().items() if "tet" in name}
+
+
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(os.path.abspath(__file__)), "corpus")
-    for fmt, files in (("obj", obj_files()), ("off", off_files()), ("ply", ply_files()), ("stl", stl_files())):
+    for fmt, files in (("obj", obj_files()), ("off", off_files()), ("ply", ply_files()), ("stl", stl_files()),
+                       ("gltf", gltf_files()), ("glb", glb_files()), ("obj.gz", gz_files())):
         d = os.path.join(out, fmt)
         shutil.rmtree(d, ignore_errors=True)
         os.makedirs(d)

@@ -3,6 +3,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <cmath>
+#include <exception>
 #include <string>
 
 #include "msmesh/mesh.h"
@@ -21,7 +22,8 @@ inline std::string mesh_problem(const Mesh& m) {
     if (m.F(f, 0) == m.F(f, 1) || m.F(f, 1) == m.F(f, 2) || m.F(f, 0) == m.F(f, 2)) return "degenerate face";
   }
   if (m.vertex_colors.size() != 0) {
-    if (m.vertex_colors.rows() != nv || m.vertex_colors.cols() != 3) return "vertex_colors is not #V by 3";
+    if (m.vertex_colors.rows() != nv || (m.vertex_colors.cols() != 3 && m.vertex_colors.cols() != 4))
+      return "vertex_colors is not #V by 3 or 4";
     if (!m.vertex_colors.allFinite() || m.vertex_colors.minCoeff() < 0 || m.vertex_colors.maxCoeff() > 1)
       return "vertex colour outside [0,1]";
   }
@@ -32,6 +34,17 @@ inline std::string mesh_problem(const Mesh& m) {
   if (m.vertex_normals.size() != 0) {
     if (m.vertex_normals.rows() != nv || m.vertex_normals.cols() != 3) return "vertex_normals is not #V by 3";
     if (!m.vertex_normals.allFinite()) return "non-finite vertex normal";
+  }
+  if (m.face_colors.size() != 0 &&
+      (!m.face_colors.allFinite() || m.face_colors.minCoeff() < 0 || m.face_colors.maxCoeff() > 1))
+    return "face colour outside [0,1]";
+  if (m.texcoords.size() != 0 && !m.texcoords.allFinite()) return "non-finite per-corner texture coordinate";
+  for (const VertexProperty& p : m.vertex_properties)
+    if (p.values.size() != nv) return "vertex property " + p.name + " has not #V values";
+  try {
+    validate_attributes(m, "read mesh");
+  } catch (const std::exception& e) {
+    return e.what();
   }
   return "";
 }

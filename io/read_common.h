@@ -97,6 +97,18 @@ struct Soup {
   std::vector<std::array<double, 3>> rgb;  ///< OBJ "v x y z r g b" colours in [0,1]
   std::vector<std::array<double, 2>> uv;
   std::vector<std::array<double, 3>> normals;
+  std::vector<double> alpha;  ///< per-vertex alpha in [0,1] (PLY `alpha`, glTF COLOR_0 vec4)
+  // Per polygon (empty when absent): colours, material, group and object indices (−1 none).
+  std::vector<std::array<double, 4>> face_rgba;
+  int face_color_channels = 3;  ///< 3 or 4 (alpha) when face_rgba is filled
+  std::vector<int> polygon_material, polygon_group, polygon_object;
+  /// Per corner of the polygons, in order (flattened): index into texcoord_table, −1 none.
+  /// Empty when the file has no per-corner texture coordinates (or they are per-vertex: uv).
+  std::vector<long long> corner_texcoord;
+  std::vector<std::array<double, 2>> texcoord_table;
+  /// Document-level attributes the readers fill directly: material libraries and names, group
+  /// and object names, extra vertex properties (#points values), position type, glTF document.
+  Mesh extra;
   ReadNotes notes;
 };
 
@@ -149,5 +161,7 @@ void read_obj(const std::string& path, std::string_view data, Soup& soup);  // r
 void read_off(const std::string& path, std::string_view data, Soup& soup);  // read_off.cpp
 void read_ply(const std::string& path, std::string_view data, Soup& soup);  // read_ply.cpp
 void read_stl(const std::string& path, std::string_view data, Soup& soup);  // read_stl.cpp
+/// glTF 2.0 (`glb` true: binary container); external buffers and images are found next to `path`.
+void read_gltf(const std::string& path, std::string_view data, bool glb, Soup& soup);  // read_gltf.cpp
 
 }  // namespace msmesh::io_detail

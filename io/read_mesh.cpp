@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <climits>
 #include <cstdint>
@@ -18,9 +19,11 @@
 #include <string_view>
 #include <system_error>
 
+#include "gzip.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/memory.h"
+#include "msmesh/mesh_attributes.h"
 #include "msmesh/mesh_format.h"
 #include "read_common.h"
 
@@ -81,6 +84,52 @@ std::string read_whole_file(const std::string& path) {
 // ---------------------------------------------------------------------------------------------
 // Soup to mesh
 
+/// The attributes beyond V, F, colours, uv and normals: alpha, per-face values of the polygon
+/// each triangle comes from, per-corner texture coordinates, and the document-level ones.
+void fill_face_attributes(const Soup& soup, const std::vector<int>& tri_polygon,
+                          const std::vector<std::array<long long, 3>>& tri_texcoord, Mesh& mesh) {
+  const Eigen::Index nv = mesh.V.rows(), nf = mesh.F.rows();
+  const std::size_t np = soup.polygons.size();
+  if (soup.alpha.size() == static_cast<std::size_t>(nv)) {
+    if (mesh.vertex_colors.rows() != nv) mesh.vertex_colors = Eigen::MatrixXd::Ones(nv, 3);
+    mesh.vertex_colors.conservativeResize(nv, 4);
+    for (Eigen::Index i = 0; i < nv; ++i) mesh.vertex_colors(i, 3) = soup.alpha[static_cast<std::size_t>(i)];
+  }
+  if (soup.face_rgba.size() == np) {
+    mesh.face_colors.resize(nf, soup.face_color_channels);
+    for (Eigen::Index t = 0; t < nf; ++t)
+      for (int c = 0; c < soup.face_color_channels; ++c)
+        mesh.face_colors(t, c) = soup.face_rgba[static_cast<std::size_t>(tri_polygon[t])][static_cast<std::size_t>(c)];
+  }
+  auto per_face = [&](const std::vector<int>& of_polygon, Eigen::VectorXi& out) {
+    if (of_polygon.size() != np) return;
+    out.resize(nf);
+    for (Eigen::Index t = 0; t < nf; ++t) out(t) = of_polygon[static_cast<std::size_t>(tri_polygon[t])];
+  };
+  per_face(soup.polygon_material, mesh.face_materials);
+  per_face(soup.polygon_group, mesh.face_groups);
+  per_face(soup.polygon_object, mesh.face_objects);
+  if (!tri_texcoord.empty() || (!soup.corner_texcoord.empty() && nf == 0)) {
+    mesh.texcoords.resize(static_cast<Eigen::Index>(soup.texcoord_table.size()), 2);
+    for (std::size_t i = 0; i < soup.texcoord_table.size(); ++i)
+      mesh.texcoords.row(static_cast<Eigen::Index>(i)) << soup.texcoord_table[i][0], soup.texcoord_table[i][1];
+    mesh.face_texcoords.resize(nf, 3);
+    for (Eigen::Index t = 0; t < nf; ++t)
+      for (int k = 0; k < 3; ++k)
+        mesh.face_texcoords(t, k) =
+            static_cast<int>(tri_texcoord[static_cast<std::size_t>(t)][static_cast<std::size_t>(k)]);
+  }
+  const Mesh& x = soup.extra;
+  mesh.material_libraries = x.material_libraries;
+  mesh.material_names = x.material_names;
+  mesh.group_names = x.group_names;
+  mesh.object_names = x.object_names;
+  mesh.position_type = x.position_type;
+  mesh.gltf_document = x.gltf_document;
+  for (const VertexProperty& p : x.vertex_properties)
+    if (p.values.size() == nv) mesh.vertex_properties.push_back(p);
+}
+
 Mesh soup_to_mesh(const std::string& path, const Soup& soup, Eigen::Index* dropped_degenerate) {
   const std::size_t nv = soup.points.size();
   if (nv == 0) throw IoError(path + ": the file contains no vertices");
@@ -101,13 +150,22 @@ Mesh soup_to_mesh(const std::string& path, const Soup& soup, Eigen::Index* dropp
     if (poly.size() >= 3) triangles += poly.size() - 2;
   }
   // Polygons are triangulated (a fan when convex, ear clipping otherwise); triangles
-  // repeating a vertex are dropped.
+  // repeating a vertex are dropped. Per-polygon and per-corner attributes follow the triangles.
   Eigen::Index dropped = 0;
   mesh.F.resize(static_cast<Eigen::Index>(triangles), 3);
+  std::vector<int> tri_polygon;  // polygon of each triangle
+  std::vector<std::array<long long, 3>> tri_texcoord;
+  const bool corner_tc = !soup.corner_texcoord.empty();
+  tri_polygon.reserve(triangles);
+  if (corner_tc) tri_texcoord.reserve(triangles);
   Eigen::Index f = 0;
+  std::size_t first_corner = 0;
   std::vector<int> corners;
   std::vector<std::array<int, 3>> tris;
-  for (const Polygon& poly : soup.polygons) {
+  for (std::size_t p = 0; p < soup.polygons.size(); ++p) {
+    const Polygon& poly = soup.polygons[p];
+    const std::size_t corner0 = first_corner;
+    first_corner += poly.size();
     if (poly.size() < 3) {
       ++dropped;
       continue;
@@ -121,6 +179,16 @@ Mesh soup_to_mesh(const std::string& path, const Soup& soup, Eigen::Index* dropp
         continue;
       }
       mesh.F.row(f++) << a, b, c;
+      tri_polygon.push_back(static_cast<int>(p));
+      if (corner_tc) {
+        std::array<long long, 3> t{};
+        const int abc[3] = {a, b, c};
+        for (int k = 0; k < 3; ++k) {
+          const auto at = std::find(corners.begin(), corners.end(), abc[k]) - corners.begin();
+          t[static_cast<std::size_t>(k)] = soup.corner_texcoord[corner0 + static_cast<std::size_t>(at)];
+        }
+        tri_texcoord.push_back(t);
+      }
     }
   }
   mesh.F.conservativeResize(f, 3);
@@ -157,6 +225,8 @@ Mesh soup_to_mesh(const std::string& path, const Soup& soup, Eigen::Index* dropp
     // products: no normals rather than non-finite ones.
     if (!mesh.vertex_normals.allFinite()) mesh.vertex_normals.resize(0, 3);
   }
+  fill_face_attributes(soup, tri_polygon, tri_texcoord, mesh);
+  if (mesh.face_texcoords.size() > 0) corner_uv_to_vertex_uv(mesh);  // per-vertex after all (no seams)
   if (dropped_degenerate) *dropped_degenerate = dropped;
   return mesh;
 }
@@ -173,7 +243,7 @@ Mesh read_mesh(const std::string& path, Eigen::Index* dropped_degenerate) {
 Mesh read_mesh(const std::string& path, ReadNotes& notes) {
   const std::string format = mesh_format_from_path(path);
   const std::string data = read_whole_file(path);
-  return read_mesh_from_memory(data, format, path, notes);
+  return read_mesh_from_memory(data, is_gzip_path(path) ? format + ".gz" : format, path, notes);
 }
 
 Mesh read_mesh_from_memory(std::string_view data, const std::string& format, const std::string& path,
@@ -186,20 +256,31 @@ Mesh read_mesh_from_memory(std::string_view data, const std::string& format, con
 
 Mesh read_mesh_from_memory(std::string_view data, const std::string& format, const std::string& path,
                            ReadNotes& notes) {
-  if (format != "obj" && format != "off" && format != "ply" && format != "stl")
-    throw IoError(path + ": unknown mesh format " + quote_word(format) + "; expected obj, off, ply or stl");
+  const bool gz = format.size() > 3 && format.compare(format.size() - 3, 3, ".gz") == 0;
+  const std::string base = gz ? format.substr(0, format.size() - 3) : format;
+  if (base != "obj" && base != "off" && base != "ply" && base != "stl" && base != "gltf" && base != "glb")
+    throw IoError(path + ": unknown mesh format " + quote_word(format) +
+                  "; expected obj, off, ply, stl, gltf or glb (optionally with .gz)");
   if (data.empty()) throw IoError(path + ": empty file");
+  std::string inflated;
+  if (gz) {
+    inflated = gunzip(data, path);
+    data = inflated;
+    if (data.empty()) throw IoError(path + ": empty file (after gzip decompression)");
+  }
   Soup soup;
   t_polygon_limit = data.size();
   try {
-    if (format == "obj")
+    if (base == "obj")
       read_obj(path, data, soup);
-    else if (format == "off")
+    else if (base == "off")
       read_off(path, data, soup);
-    else if (format == "ply")
+    else if (base == "ply")
       read_ply(path, data, soup);
-    else
+    else if (base == "stl")
       read_stl(path, data, soup);
+    else
+      read_gltf(path, data, base == "glb", soup);
   } catch (const IoError&) {
     throw;
   } catch (const PolygonTooLarge& e) {
@@ -214,7 +295,9 @@ Mesh read_mesh_from_memory(std::string_view data, const std::string& format, con
   }
   Mesh mesh = soup_to_mesh(path, soup, &notes.dropped_degenerate);
   notes.had_normals = soup.notes.had_normals;
-  notes.uv_dropped = soup.notes.uv_dropped;
+  notes.uv_dropped = false;
+  notes.uv_seams = mesh.face_texcoords.size() > 0;
+  notes.dropped = soup.notes.dropped;
   return mesh;
 }
 

@@ -11,8 +11,10 @@
 // read "2.9" as 2, ended a face at an overflowing index and refused the BOM's first line.
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <climits>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -81,6 +83,30 @@ void read_obj(const std::string& path, std::string_view data, Soup& soup) {
   long long max_index = -1;  // largest 0-based vertex index of a positive (forward) reference
   std::size_t max_index_line = 0;
   std::vector<std::string_view> w;
+  // Materials, groups and objects: the current one of each (−1 none) and the names seen.
+  int material = -1, group = -1, object = -1;
+  bool any_material = false, any_group = false, any_object = false;
+  auto name_index = [](std::vector<std::string>& names, const std::string& name) {
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it != names.end()) return static_cast<int>(it - names.begin());
+    names.push_back(name);
+    return static_cast<int>(names.size() - 1);
+  };
+  // The rest of a record's line after its keyword (names may contain spaces).
+  auto rest_of = [&](std::size_t n) {
+    std::string_view line = lines[n];
+    const std::size_t hash = line.find('#');
+    if (hash != std::string_view::npos) line = line.substr(0, hash);
+    std::size_t i = 0;
+    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    std::size_t e = line.size();
+    while (e > i && std::isspace(static_cast<unsigned char>(line[e - 1]))) --e;
+    return std::string(line.substr(i, e - i));
+  };
+  std::size_t skipped_lines = 0, skipped_points = 0, smoothing = 0, other = 0;
+  std::string first_other;
   auto number = [&](std::size_t n, std::string_view word, const char* what) {
     const auto x = parse_double(word);
     if (!x) fail(n, std::string("cannot read ") + what + " " + quote_word(word));
@@ -118,7 +144,34 @@ void read_obj(const std::string& path, std::string_view data, Soup& soup) {
       if (w.size() < 4) fail(n, "normal record with fewer than 3 components");
       vn.push_back({number(n, w[1], "normal component"), number(n, w[2], "normal component"),
                     number(n, w[3], "normal component")});
+    } else if (w[0] == "mtllib") {
+      // Several file names may follow; each is found from the OBJ file's folder.
+      auto& libs = soup.extra.material_libraries;
+      for (std::size_t k = 1; k < w.size(); ++k) {
+        const std::filesystem::path name{std::string(w[k])};
+        const std::string lib =
+            (name.is_absolute() ? name : std::filesystem::path(path).parent_path() / name).lexically_normal().string();
+        if (std::find(libs.begin(), libs.end(), lib) == libs.end()) libs.push_back(lib);
+      }
+    } else if (w[0] == "usemtl") {
+      material = name_index(soup.extra.material_names, rest_of(n));
+    } else if (w[0] == "g") {
+      group = name_index(soup.extra.group_names, rest_of(n));  // "g" alone: the default group ""
+    } else if (w[0] == "o") {
+      object = name_index(soup.extra.object_names, rest_of(n));
+    } else if (w[0] == "l") {
+      ++skipped_lines;
+    } else if (w[0] == "p") {
+      ++skipped_points;
+    } else if (w[0] == "s") {
+      if (w.size() > 1 && w[1] != "off" && w[1] != "0") ++smoothing;
     } else if (w[0] == "f") {
+      any_material = any_material || material >= 0;
+      any_group = any_group || group >= 0;
+      any_object = any_object || object >= 0;
+      soup.polygon_material.push_back(material);
+      soup.polygon_group.push_back(group);
+      soup.polygon_object.push_back(object);
       Polygon& poly = soup.polygons.emplace_back();
       for (std::size_t k = 1; k < w.size(); ++k, ++corners) {
         ObjCorner c;
@@ -139,10 +192,22 @@ void read_obj(const std::string& path, std::string_view data, Soup& soup) {
         attribute(corner_vt, c.vt, vt.size());
         attribute(corner_vn, c.vn, vn.size());
       }
+    } else {
+      // Free-form geometry and unknown keywords are not part of the surface.
+      if (other++ == 0) first_other = std::string(w[0].substr(0, 20));
     }
-    // Other records ('l', 'p', 'o', 'g', 's', 'usemtl', 'mtllib', free-form, unknown) are not
-    // part of the surface.
   }
+  if (!any_material) soup.polygon_material.clear();
+  if (!any_group) soup.polygon_group.clear();
+  if (!any_object) soup.polygon_object.clear();
+  if (skipped_lines)
+    soup.notes.dropped.push_back(std::to_string(skipped_lines) + " OBJ line elements ('l') are not kept");
+  if (skipped_points)
+    soup.notes.dropped.push_back(std::to_string(skipped_points) + " OBJ point elements ('p') are not kept");
+  if (smoothing) soup.notes.dropped.emplace_back("OBJ smoothing groups ('s') are not kept (normals are recomputed)");
+  if (other)
+    soup.notes.dropped.push_back(std::to_string(other) + " OBJ records of unknown kind (the first '" + first_other +
+                                 "') are not kept");
   if (soup.points.empty()) throw IoError(path + ": no vertices ('v' records)");
   if (soup.polygons.empty()) throw IoError(path + ": no faces ('f' records)");
   const std::size_t nv = soup.points.size();
@@ -181,7 +246,22 @@ void read_obj(const std::string& path, std::string_view data, Soup& soup) {
   std::vector<long long> vertex_vt, vertex_vn;
   if (!corner_vt.empty()) {
     if (!per_vertex(corner_vt, vt.size(), vertex_vt)) {
-      soup.notes.uv_dropped = true;
+      // Seams: texture coordinates per corner (corners without one or naming a vt that does
+      // not exist get none, -1); non-finite values drop them all, as for PLY.
+      bool finite = true;
+      for (const auto& t : vt) finite = finite && std::isfinite(t[0]) && std::isfinite(t[1]);
+      if (finite) {
+        soup.texcoord_table = vt;
+        soup.corner_texcoord = corner_vt;
+        std::size_t bad = 0;
+        for (long long& c : soup.corner_texcoord)
+          if (c < -1 || c >= static_cast<long long>(vt.size())) c = -1, ++bad;
+        if (bad)
+          soup.notes.dropped.push_back(std::to_string(bad) +
+                                       " face corners name a texture coordinate that does not exist; they have none");
+      } else {
+        soup.notes.dropped.emplace_back("texture coordinates with a non-finite value are not kept");
+      }
     } else {
       soup.uv.resize(nv, {0.0, 0.0});
       for (std::size_t v = 0; v < nv; ++v)

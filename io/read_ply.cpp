@@ -284,6 +284,17 @@ class PlyBodyReader {
   unsigned long long item_ = 0;
 };
 
+ScalarType scalar_type_of(const std::string& t) {
+  if (t == "char" || t == "int8") return ScalarType::Int8;
+  if (t == "uchar" || t == "uint8") return ScalarType::UInt8;
+  if (t == "short" || t == "int16") return ScalarType::Int16;
+  if (t == "ushort" || t == "uint16") return ScalarType::UInt16;
+  if (t == "int" || t == "int32") return ScalarType::Int32;
+  if (t == "uint" || t == "uint32") return ScalarType::UInt32;
+  if (t == "float" || t == "float32") return ScalarType::Float32;
+  return ScalarType::Float64;
+}
+
 /// Index of the property named `name` (not a list) in `e`, or -1.
 int find_scalar(const PlyElement& e, const char* name) {
   for (std::size_t p = 0; p < e.properties.size(); ++p)
@@ -298,23 +309,42 @@ void read_ply(const std::string& path, std::string_view data, Soup& soup) {
   const PlyHeader h = parse_ply_header(path, data);
   PlyBodyReader in(path, data, h);
   bool all_uv = true, all_normals = true;
+  bool float_positions = true;
+  std::vector<std::string> dropped_face_properties, dropped_elements, dropped_vertex_lists;
   for (const PlyElement& e : h.elements) {
     const bool vertex = e.name == "vertex" || e.name == "vertices", face = e.name == "face" || e.name == "faces";
+    if (!vertex && !face && e.count > 0) dropped_elements.push_back(e.name);
     // Vertex: x, y, z; a colour from red/green/blue (else r/g/b) when all three are uchar,
-    // as CGAL read them; texture coordinates and normals. Face: the vertex_indices list (else
-    // vertex_index) of any integer type. Everything else is read and skipped.
-    int x = -1, y = -1, z = -1, col[3] = {-1, -1, -1}, iu = -1, iv = -1, nx = -1, ny = -1, nz = -1, idx = -1;
-    if (vertex) {
-      x = find_scalar(e, "x"), y = find_scalar(e, "y"), z = find_scalar(e, "z");
+    // as CGAL read them, and uchar alpha; texture coordinates and normals; every other scalar
+    // property as an extra vertex property. Face: the vertex_indices list (else vertex_index)
+    // of any integer type, uchar red/green/blue[/alpha], MeshLab's per-corner `texcoord` list.
+    // Everything else is read and skipped (named in the notes).
+    int x = -1, y = -1, z = -1, col[3] = {-1, -1, -1}, alpha = -1, iu = -1, iv = -1, nx = -1, ny = -1, nz = -1;
+    int idx = -1, tex = -1;
+    std::vector<int> extra_slot(e.properties.size(), -1);  // vertex property -> soup.extra.vertex_properties
+    const std::size_t first_extra = soup.extra.vertex_properties.size();
+    std::vector<std::vector<double>> extra_values;
+    const std::size_t first_point = soup.points.size();
+    auto uchar_colour = [&](int c[3], int& a) {
       const char* const names[3][2] = {{"red", "r"}, {"green", "g"}, {"blue", "b"}};
       bool uchar = true;
-      for (int c = 0; c < 3; ++c) {
-        col[c] = find_scalar(e, names[c][0]);
-        if (col[c] < 0) col[c] = find_scalar(e, names[c][1]);
-        const std::string t = col[c] < 0 ? "" : e.properties[static_cast<std::size_t>(col[c])].type;
+      for (int k = 0; k < 3; ++k) {
+        c[k] = find_scalar(e, names[k][0]);
+        if (c[k] < 0) c[k] = find_scalar(e, names[k][1]);
+        const std::string t = c[k] < 0 ? "" : e.properties[static_cast<std::size_t>(c[k])].type;
         uchar = uchar && (t == "uchar" || t == "uint8");
       }
-      if (!uchar) col[0] = col[1] = col[2] = -1;
+      if (!uchar) c[0] = c[1] = c[2] = -1;
+      a = find_scalar(e, "alpha");
+      if (a < 0) a = find_scalar(e, "a");
+      const std::string at = a < 0 ? "" : e.properties[static_cast<std::size_t>(a)].type;
+      if (c[0] < 0 || (at != "uchar" && at != "uint8")) a = -1;
+    };
+    if (vertex) {
+      x = find_scalar(e, "x"), y = find_scalar(e, "y"), z = find_scalar(e, "z");
+      for (int k : {x, y, z})
+        float_positions = float_positions && ply_type_size(e.properties[static_cast<std::size_t>(k)].type) == 4;
+      uchar_colour(col, alpha);
       static const char* const uv_names[][2] = {
           {"texture_u", "texture_v"}, {"u", "v"}, {"s", "t"}, {"texture_s", "texture_t"}};
       for (const auto& names : uv_names)
@@ -324,15 +354,40 @@ void read_ply(const std::string& path, std::string_view data, Soup& soup) {
       if (ny < 0 || nz < 0) nx = -1;  // nx alone (no ny, nz): no normals
       if (nx >= 0) soup.notes.had_normals = true;
       soup.points.reserve(soup.points.size() + e.count);  // counts are bounded by the file size (checked)
+      for (std::size_t p = 0; p < e.properties.size(); ++p) {
+        const int pi = static_cast<int>(p);
+        const PlyProperty& prop = e.properties[p];
+        if (prop.is_list) {
+          dropped_vertex_lists.push_back(prop.name);
+          continue;
+        }
+        if (pi == x || pi == y || pi == z || pi == col[0] || pi == col[1] || pi == col[2] || pi == alpha || pi == iu ||
+            pi == iv || (nx >= 0 && (pi == nx || pi == ny || pi == nz)))
+          continue;
+        extra_slot[p] = static_cast<int>(extra_values.size());
+        extra_values.emplace_back();
+        extra_values.back().reserve(static_cast<std::size_t>(e.count));
+        soup.extra.vertex_properties.push_back({prop.name, Eigen::VectorXd(), scalar_type_of(prop.type)});
+      }
     }
     if (face) {
       for (const char* name : {"vertex_indices", "vertex_index"})
         for (std::size_t p = 0; p < e.properties.size() && idx < 0; ++p)
           if (e.properties[p].is_list && e.properties[p].name == name) idx = static_cast<int>(p);
+      for (std::size_t p = 0; p < e.properties.size(); ++p)
+        if (e.properties[p].is_list && e.properties[p].name == "texcoord" && ply_is_float(e.properties[p].type))
+          tex = static_cast<int>(p);
+      uchar_colour(col, alpha);
+      for (std::size_t p = 0; p < e.properties.size(); ++p) {
+        const int pi = static_cast<int>(p);
+        if (pi != idx && pi != tex && pi != col[0] && pi != col[1] && pi != col[2] && pi != alpha)
+          dropped_face_properties.push_back(e.properties[p].name);
+      }
       soup.polygons.reserve(soup.polygons.size() + e.count);
     }
     double value[3] = {0, 0, 0}, uv[2] = {0, 0}, normal[3] = {0, 0, 0};
-    int rgb[3] = {0, 0, 0};
+    int rgb[4] = {0, 0, 0, 255};
+    std::vector<double> corner_uv;
     for (unsigned long long j = 0; j < e.count; ++j) {
       in.at(e, j);
       for (std::size_t p = 0; p < e.properties.size(); ++p) {
@@ -345,16 +400,23 @@ void read_ply(const std::string& path, std::string_view data, Soup& soup) {
             poly.resize(n);
             // A negative index wraps to a huge one here; soup_to_mesh reports it signed.
             for (std::size_t k = 0; k < n; ++k) poly[k] = static_cast<std::size_t>(in.integer(prop.item, prop.name));
+          } else if (pi == tex) {
+            corner_uv.resize(n);
+            for (std::size_t k = 0; k < n; ++k) corner_uv[k] = in.real(prop.item, prop.name);
           } else {
             for (std::size_t k = 0; k < n; ++k) in.real(prop.item, prop.name);
           }
           continue;
         }
-        if (pi == col[0] || pi == col[1] || pi == col[2]) {
-          rgb[pi == col[0] ? 0 : pi == col[1] ? 1 : 2] = static_cast<int>(in.integer(prop.item, prop.name));
+        if (pi == col[0] || pi == col[1] || pi == col[2] || pi == alpha) {
+          rgb[pi == col[0]   ? 0
+              : pi == col[1] ? 1
+              : pi == col[2] ? 2
+                             : 3] = static_cast<int>(in.integer(prop.item, prop.name));
           continue;
         }
         const double v = in.real(prop.item, prop.name);
+        if (vertex && extra_slot[p] >= 0) extra_values[static_cast<std::size_t>(extra_slot[p])].push_back(v);
         if (pi == x) value[0] = v;
         if (pi == y) value[1] = v;
         if (pi == z) value[2] = v;
@@ -364,9 +426,29 @@ void read_ply(const std::string& path, std::string_view data, Soup& soup) {
         if (pi == ny) normal[1] = v;
         if (pi == nz) normal[2] = v;
       }
+      if (face) {
+        if (col[0] >= 0) soup.face_rgba.push_back({rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0, rgb[3] / 255.0});
+        if (tex >= 0 && idx >= 0) {
+          // Per-corner texture coordinates (2 per corner); a face without them (or with a
+          // different count) has none.
+          const std::size_t nc = soup.polygons.back().size();
+          const bool ok = corner_uv.size() == 2 * nc;
+          for (std::size_t k = 0; k < nc; ++k) {
+            if (ok && std::isfinite(corner_uv[2 * k]) && std::isfinite(corner_uv[2 * k + 1])) {
+              soup.corner_texcoord.push_back(static_cast<long long>(soup.texcoord_table.size()));
+              soup.texcoord_table.push_back({corner_uv[2 * k], corner_uv[2 * k + 1]});
+            } else {
+              soup.corner_texcoord.push_back(-1);
+            }
+          }
+          corner_uv.clear();
+        }
+        continue;
+      }
       if (!vertex) continue;
       soup.points.emplace_back(value[0], value[1], value[2]);
       if (col[0] >= 0) soup.vertex_colors.emplace_back(rgb[0], rgb[1], rgb[2]);
+      if (alpha >= 0) soup.alpha.push_back(rgb[3] / 255.0);
       if (iu >= 0) {
         all_uv = all_uv && std::isfinite(uv[0]) && std::isfinite(uv[1]);
         soup.uv.push_back({uv[0], uv[1]});
@@ -376,11 +458,45 @@ void read_ply(const std::string& path, std::string_view data, Soup& soup) {
         soup.normals.push_back({normal[0], normal[1], normal[2]});
       }
     }
+    if (vertex) {
+      for (std::size_t k = 0; k < extra_values.size(); ++k) {
+        VertexProperty& vp = soup.extra.vertex_properties[first_extra + k];
+        vp.values = Eigen::Map<const Eigen::VectorXd>(extra_values[k].data(),
+                                                      static_cast<Eigen::Index>(extra_values[k].size()));
+      }
+      if (first_point != 0 && !extra_values.empty()) soup.extra.vertex_properties.resize(first_extra);
+    }
   }
+  if (float_positions && !soup.points.empty()) soup.extra.position_type = ScalarType::Float32;
   // Attributes with a non-finite value, or missing on some vertex element, are dropped.
   if (!all_uv || soup.uv.size() != soup.points.size()) soup.uv.clear();
   if (!all_normals || soup.normals.size() != soup.points.size()) soup.normals.clear();
   if (soup.vertex_colors.size() != soup.points.size()) soup.vertex_colors.clear();
+  if (soup.alpha.size() != soup.points.size()) soup.alpha.clear();
+  if (soup.face_rgba.size() != soup.polygons.size()) soup.face_rgba.clear();
+  soup.face_color_channels = 3;
+  for (const auto& c : soup.face_rgba)
+    if (c[3] != 1.0) soup.face_color_channels = 4;
+  if (!soup.face_rgba.empty()) {
+    // Alpha declared on the faces is kept even when every face is opaque.
+    for (const PlyElement& e : h.elements)
+      if ((e.name == "face" || e.name == "faces") && (find_scalar(e, "alpha") >= 0 || find_scalar(e, "a") >= 0))
+        soup.face_color_channels = 4;
+  }
+  std::size_t corners = 0;
+  for (const Polygon& poly : soup.polygons) corners += poly.size();
+  if (soup.corner_texcoord.size() != corners) soup.corner_texcoord.clear(), soup.texcoord_table.clear();
+  auto list = [](const std::vector<std::string>& names) {
+    std::string s;
+    for (std::size_t k = 0; k < names.size() && k < 8; ++k) s += (k ? ", '" : "'") + names[k].substr(0, 40) + "'";
+    if (names.size() > 8) s += ", ...";
+    return s;
+  };
+  if (!dropped_vertex_lists.empty())
+    soup.notes.dropped.push_back("PLY vertex list properties are not kept: " + list(dropped_vertex_lists));
+  if (!dropped_face_properties.empty())
+    soup.notes.dropped.push_back("PLY face properties are not kept: " + list(dropped_face_properties));
+  if (!dropped_elements.empty()) soup.notes.dropped.push_back("PLY elements are not kept: " + list(dropped_elements));
 }
 
 }  // namespace msmesh::io_detail

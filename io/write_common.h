@@ -51,6 +51,13 @@ class OutBuffer {
     buf_.append(tmp, r.ptr);
     return maybe_flush();
   }
+  /// Shortest decimal form that reads back to exactly the float `x`.
+  OutBuffer& real32(float x) {
+    char tmp[32];
+    const auto r = std::to_chars(tmp, tmp + sizeof tmp, x);
+    buf_.append(tmp, r.ptr);
+    return maybe_flush();
+  }
   OutBuffer& integer(long long v) {
     char tmp[24];
     const auto r = std::to_chars(tmp, tmp + sizeof tmp, v);
@@ -95,12 +102,18 @@ inline std::uint8_t color_byte(double c) {
 
 // One writer per format: formats `m` (checked by check_for_writing) into `o`.
 
-void write_obj(OutBuffer& o, const Mesh& m);  // write_obj.cpp
-void write_off(OutBuffer& o, const Mesh& m);  // write_off.cpp
+/// OBJ; `path` (the output) is needed to rewrite the material libraries' paths relative to it.
+void write_obj(OutBuffer& o, const Mesh& m, const std::string& path);  // write_obj.cpp
+void write_off(OutBuffer& o, const Mesh& m);                           // write_off.cpp
 
-/// PLY with double coordinates (exact round trip), optional vertex normals, colours and uv, and
-/// optional per-face colours.
+/// PLY with double coordinates (float when m.position_type is Float32), optional vertex normals,
+/// colours (with alpha), uv, extra properties (each with its type), per-face colours
+/// (`face_colors` when given, else m.face_colors) and per-corner texture coordinates.
 void write_ply(OutBuffer& o, const Mesh& m, bool binary, const Eigen::MatrixXd* face_colors);  // write_ply.cpp
+
+/// glTF 2.0 (`glb`: the binary container) of the mesh, with m.gltf_document's scene when it
+/// has one; `path` names the output in errors and for external image references.
+void write_gltf(OutBuffer& o, const Mesh& m, bool glb, const std::string& path);  // write_gltf.cpp
 
 /// Binary STL is float32; throws InvalidInput naming `path` when it cannot hold the faces.
 void write_stl(OutBuffer& o, const Mesh& m, bool binary, const std::string& path);  // write_stl.cpp

@@ -7,9 +7,14 @@ namespace msmesh::io_detail {
 
 void write_off(OutBuffer& o, const Mesh& m) {
   const bool colors = m.vertex_colors.size() > 0;
+  // Coordinates read as float are written as float again (the same digits as the source).
+  const bool f32 = m.position_type == ScalarType::Float32;
+  auto coord = [&](double x) -> OutBuffer& { return f32 ? o.real32(static_cast<float>(x)) : o.real(x); };
   o.text(colors ? "COFF\n" : "OFF\n").integer(m.V.rows()).ch(' ').integer(m.F.rows()).text(" 0\n");
   for (Eigen::Index i = 0; i < m.V.rows(); ++i) {
-    o.real(m.V(i, 0)).ch(' ').real(m.V(i, 1)).ch(' ').real(m.V(i, 2));
+    coord(m.V(i, 0)).ch(' ');
+    coord(m.V(i, 1)).ch(' ');
+    coord(m.V(i, 2));
     if (colors)
       o.ch(' ')
           .integer(color_byte(m.vertex_colors(i, 0)))

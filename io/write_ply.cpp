@@ -1,6 +1,10 @@
-// PLY writer, binary or ascii, with double coordinates, and write_ply_face_colors.
+// PLY writer, binary or ascii, and write_ply_face_colors. Coordinates are double, or float when
+// the mesh was read from float coordinates; colours are uchar (alpha too); extra vertex
+// properties keep their type; per-corner texture coordinates are MeshLab's face `texcoord` list.
 #include <Eigen/Core>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <ostream>
 #include <string>
 
@@ -12,50 +16,118 @@
 
 namespace msmesh {
 namespace io_detail {
+namespace {
 
-/// PLY with double coordinates (exact round trip), optional vertex normals, colours and uv, and
-/// optional per-face colours.
+template <class T>
+T to_integer(double x) {
+  if (std::isnan(x)) return 0;
+  const double r = std::round(x);
+  if (r <= static_cast<double>(std::numeric_limits<T>::lowest())) return std::numeric_limits<T>::lowest();
+  if (r >= static_cast<double>(std::numeric_limits<T>::max())) return std::numeric_limits<T>::max();
+  return static_cast<T>(r);
+}
+
+/// One value as `type`, binary or ascii (integers rounded and clamped to the type's range).
+void put(OutBuffer& o, bool binary, ScalarType type, double x) {
+  switch (type) {
+    case ScalarType::Int8:
+      binary ? void(o.binary<std::int8_t>(to_integer<std::int8_t>(x))) : void(o.integer(to_integer<std::int8_t>(x)));
+      return;
+    case ScalarType::UInt8:
+      binary ? void(o.binary<std::uint8_t>(to_integer<std::uint8_t>(x))) : void(o.integer(to_integer<std::uint8_t>(x)));
+      return;
+    case ScalarType::Int16:
+      binary ? void(o.binary<std::int16_t>(to_integer<std::int16_t>(x))) : void(o.integer(to_integer<std::int16_t>(x)));
+      return;
+    case ScalarType::UInt16:
+      binary ? void(o.binary<std::uint16_t>(to_integer<std::uint16_t>(x)))
+             : void(o.integer(to_integer<std::uint16_t>(x)));
+      return;
+    case ScalarType::Int32:
+      binary ? void(o.binary<std::int32_t>(to_integer<std::int32_t>(x))) : void(o.integer(to_integer<std::int32_t>(x)));
+      return;
+    case ScalarType::UInt32:
+      binary ? void(o.binary<std::uint32_t>(to_integer<std::uint32_t>(x)))
+             : void(o.integer(to_integer<std::uint32_t>(x)));
+      return;
+    case ScalarType::Float32:
+      binary ? void(o.binary<float>(static_cast<float>(x))) : void(o.real32(static_cast<float>(x)));
+      return;
+    case ScalarType::Float64:
+      binary ? void(o.binary<double>(x)) : void(o.real(x));
+      return;
+  }
+}
+
+}  // namespace
+
 void write_ply(OutBuffer& o, const Mesh& m, bool binary, const Eigen::MatrixXd* face_colors) {
-  const bool vcolors = m.vertex_colors.size() > 0, uv = m.uv.size() > 0, normals = m.vertex_normals.size() > 0;
+  const bool vcolors = m.vertex_colors.size() > 0, valpha = m.vertex_colors.cols() == 4;
+  const bool uv = m.uv.size() > 0, normals = m.vertex_normals.size() > 0;
+  const Eigen::MatrixXd* fc = face_colors ? face_colors : m.face_colors.size() > 0 ? &m.face_colors : nullptr;
+  const bool falpha = fc && fc->cols() == 4, corner_uv = m.face_texcoords.size() > 0;
+  // Float coordinates stay float (normals and uv with them); double otherwise (exact round trip).
+  const ScalarType real = m.position_type == ScalarType::Float32 ? ScalarType::Float32 : ScalarType::Float64;
+  const std::string rt = scalar_type_name(real);
   o.text("ply\nformat ").text(binary ? "binary_little_endian" : "ascii").text(" 1.0\ncomment written by msmesh\n");
-  o.text("element vertex ").integer(m.V.rows()).text("\nproperty double x\nproperty double y\nproperty double z\n");
-  if (normals) o.text("property double nx\nproperty double ny\nproperty double nz\n");
+  o.text("element vertex ").integer(m.V.rows()).ch('\n');
+  for (const char* c : {"x", "y", "z"}) o.text("property ").text(rt).ch(' ').text(c).ch('\n');
+  if (normals)
+    for (const char* c : {"nx", "ny", "nz"}) o.text("property ").text(rt).ch(' ').text(c).ch('\n');
   if (vcolors) o.text("property uchar red\nproperty uchar green\nproperty uchar blue\n");
-  if (uv) o.text("property double texture_u\nproperty double texture_v\n");
+  if (valpha) o.text("property uchar alpha\n");
+  if (uv) o.text("property ").text(rt).text(" texture_u\nproperty ").text(rt).text(" texture_v\n");
+  for (const VertexProperty& p : m.vertex_properties)
+    o.text("property ").text(scalar_type_name(p.type)).ch(' ').text(p.name).ch('\n');
   o.text("element face ").integer(m.F.rows()).text("\nproperty list uchar int vertex_indices\n");
-  if (face_colors) o.text("property uchar red\nproperty uchar green\nproperty uchar blue\n");
+  if (fc) o.text("property uchar red\nproperty uchar green\nproperty uchar blue\n");
+  if (falpha) o.text("property uchar alpha\n");
+  if (corner_uv) o.text("property list uchar ").text(rt).text(" texcoord\n");
   o.text("end_header\n");
+  auto sep = [&] {
+    if (!binary) o.ch(' ');
+  };
   for (Eigen::Index i = 0; i < m.V.rows(); ++i) {
-    if (binary) {
-      for (int c = 0; c < 3; ++c) o.binary<double>(m.V(i, c));
-      if (normals)
-        for (int c = 0; c < 3; ++c) o.binary<double>(m.vertex_normals(i, c));
-      if (vcolors)
-        for (int c = 0; c < 3; ++c) o.binary<std::uint8_t>(color_byte(m.vertex_colors(i, c)));
-      if (uv)
-        for (int c = 0; c < 2; ++c) o.binary<double>(m.uv(i, c));
-    } else {
-      o.real(m.V(i, 0)).ch(' ').real(m.V(i, 1)).ch(' ').real(m.V(i, 2));
-      if (normals)
-        for (int c = 0; c < 3; ++c) o.ch(' ').real(m.vertex_normals(i, c));
-      if (vcolors)
-        for (int c = 0; c < 3; ++c) o.ch(' ').integer(color_byte(m.vertex_colors(i, c)));
-      if (uv) o.ch(' ').real(m.uv(i, 0)).ch(' ').real(m.uv(i, 1));
-      o.ch('\n');
+    for (int c = 0; c < 3; ++c) {
+      if (c) sep();
+      put(o, binary, real, m.V(i, c));
     }
+    if (normals)
+      for (int c = 0; c < 3; ++c) sep(), put(o, binary, real, m.vertex_normals(i, c));
+    if (vcolors)
+      for (int c = 0; c < m.vertex_colors.cols(); ++c) {
+        sep();
+        binary ? void(o.binary<std::uint8_t>(color_byte(m.vertex_colors(i, c))))
+               : void(o.integer(color_byte(m.vertex_colors(i, c))));
+      }
+    if (uv)
+      for (int c = 0; c < 2; ++c) sep(), put(o, binary, real, m.uv(i, c));
+    for (const VertexProperty& p : m.vertex_properties) sep(), put(o, binary, p.type, p.values(i));
+    if (!binary) o.ch('\n');
   }
   for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
     if (binary) {
       o.binary<std::uint8_t>(3);
       for (int k = 0; k < 3; ++k) o.binary<std::int32_t>(m.F(f, k));
-      if (face_colors)
-        for (int c = 0; c < 3; ++c) o.binary<std::uint8_t>(color_byte((*face_colors)(f, c)));
     } else {
       o.text("3 ").integer(m.F(f, 0)).ch(' ').integer(m.F(f, 1)).ch(' ').integer(m.F(f, 2));
-      if (face_colors)
-        for (int c = 0; c < 3; ++c) o.ch(' ').integer(color_byte((*face_colors)(f, c)));
-      o.ch('\n');
     }
+    if (fc)
+      for (int c = 0; c < fc->cols(); ++c) {
+        sep();
+        binary ? void(o.binary<std::uint8_t>(color_byte((*fc)(f, c)))) : void(o.integer(color_byte((*fc)(f, c))));
+      }
+    if (corner_uv) {
+      // A face with a corner without texture coordinates has none (an empty list).
+      bool all = true;
+      for (int k = 0; k < 3; ++k) all = all && m.face_texcoords(f, k) >= 0;
+      sep();
+      binary ? void(o.binary<std::uint8_t>(all ? 6 : 0)) : void(o.integer(all ? 6 : 0));
+      if (all)
+        for (int k = 0; k < 3; ++k)
+          for (int c = 0; c < 2; ++c) sep(), put(o, binary, real, m.texcoords(m.face_texcoords(f, k), c));
+    }
+    if (!binary) o.ch('\n');
   }
 }
 
@@ -63,15 +135,14 @@ void write_ply(OutBuffer& o, const Mesh& m, bool binary, const Eigen::MatrixXd* 
 
 void write_ply_face_colors(const std::string& path, const Mesh& mesh, const Eigen::MatrixXd& face_colors, bool binary) {
   if (mesh_format_from_path(path) != "ply") throw IoError(path + ": face colours can only be written to a .ply file");
-  io_detail::check_for_writing(path, mesh);
-  if (face_colors.rows() != mesh.F.rows() || face_colors.cols() != 3)
-    throw InvalidInput(path + ": face colours must be #F by 3 (" + std::to_string(mesh.F.rows()) + " by 3), got " +
+  if (face_colors.rows() != mesh.F.rows() || (face_colors.cols() != 3 && face_colors.cols() != 4))
+    throw InvalidInput(path + ": face colours must be #F by 3 or 4 (" + std::to_string(mesh.F.rows()) + " by 3), got " +
                        std::to_string(face_colors.rows()) + " by " + std::to_string(face_colors.cols()));
-  write_file_atomically(path, [&](std::ostream& out) {
-    io_detail::OutBuffer o(out);
-    io_detail::write_ply(o, mesh, binary, &face_colors);
-    o.finish();
-  });
+  Mesh m = mesh;
+  m.face_colors = face_colors;
+  WriteOptions o;
+  o.binary = binary;
+  write_mesh(path, m, o);
 }
 
 }  // namespace msmesh

@@ -213,10 +213,12 @@ PunchResult punch_holes(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, int 
   res.V.resize(static_cast<Eigen::Index>(map.size()), 3);
   for (size_t i = 0; i < map.size(); ++i) res.V.row(static_cast<Eigen::Index>(i)) = V.row(map[i]);
   res.F.resize(kept, 3);
+  res.face_map.resize(kept);
   Eigen::Index r = 0;
   for (Eigen::Index f = 0; f < nf; ++f)
     if (!face_removed[f]) {
       for (int k = 0; k < 3; ++k) res.F(r, k) = res.old_to_new(F(f, k));
+      res.face_map(r) = static_cast<int>(f);
       ++r;
     }
   return res;

@@ -15,6 +15,7 @@
 #include <unordered_map>
 
 #include "msmesh/errors.h"
+#include "msmesh/mesh_attributes.h"
 #include "msmesh/parameters.h"
 #include "msmesh/topology.h"
 
@@ -79,14 +80,6 @@ struct EdgeHash {
 
 Edge undirected(int a, int b) { return a < b ? Edge{a, b} : Edge{b, a}; }
 
-/// Appends or removes rows of the per-vertex attributes along with the vertices.
-void take_rows(Eigen::MatrixXd& M, const std::vector<int>& rows) {
-  if (M.size() == 0) return;
-  Eigen::MatrixXd out(static_cast<Eigen::Index>(rows.size()), M.cols());
-  for (std::size_t i = 0; i < rows.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = M.row(rows[i]);
-  M = std::move(out);
-}
-
 void check_input(const Mesh& m) {
   const Eigen::Index nv = m.V.rows();
   if (m.V.cols() != 3 && nv > 0)
@@ -105,13 +98,7 @@ void check_input(const Mesh& m) {
       if (m.F(f, k) < 0 || m.F(f, k) >= nv)
         throw InvalidInput("repair: face " + std::to_string(f) + " refers to vertex " + std::to_string(m.F(f, k)) +
                            ", out of range [0, " + std::to_string(nv) + ")");
-  auto attr = [&](const Eigen::MatrixXd& M, int cols, const char* name) {
-    if (M.size() > 0 && (M.rows() != nv || M.cols() != cols))
-      throw InvalidInput(std::string("repair: ") + name + " must be empty or #V by " + std::to_string(cols));
-  };
-  attr(m.vertex_colors, 3, "vertex_colors");
-  attr(m.uv, 2, "uv");
-  attr(m.vertex_normals, 3, "vertex_normals");
+  validate_attributes(m, "repair");
 }
 
 double mean_face_edge_length(const Eigen::MatrixXd& V, const std::vector<std::array<int, 3>>& F) {
@@ -297,7 +284,8 @@ void split_non_manifold_vertices(int nv0, Faces& F, std::vector<int>& source_ver
 
 // 4. Orientation: breadth-first over manifold edges from each component's first face; open
 // components keep the orientation of most of their faces, closed orientable ones face outwards.
-void orient_faces(const Eigen::MatrixXd& V, const std::vector<int>& source_vertex, Faces& F, RepairReport& r) {
+void orient_faces(const Eigen::MatrixXd& V, const std::vector<int>& source_vertex, Faces& F, std::vector<bool>& flipped,
+                  RepairReport& r) {
   const auto ef = edge_faces(F);
   const int nf = static_cast<int>(F.size());
   std::vector<int> flip(nf, -1), comp(nf, -1);
@@ -366,13 +354,15 @@ void orient_faces(const Eigen::MatrixXd& V, const std::vector<int>& source_verte
     }
     r.flipped_faces += flip[f];
   }
+  flipped.assign(static_cast<std::size_t>(nf), false);
+  for (int f = 0; f < nf; ++f) flipped[static_cast<std::size_t>(f)] = flip[f] != 0;
   for (bool bad : comp_bad) r.non_orientable_components += bad;
 }
 
 // 5. Vertices: copies from splitting, then (optionally) only the referenced ones; writes V,
 // the vertex attributes and F into `mesh` and the vertex map into r.
 void store_result(Mesh& mesh, const std::vector<int>& source_vertex, bool remove_unreferenced, Faces& F,
-                  RepairReport& r) {
+                  const std::vector<int>& origin, const std::vector<bool>& flipped, RepairReport& r) {
   const int nv0 = static_cast<int>(mesh.V.rows());
   const int nv1 = static_cast<int>(source_vertex.size());
   std::vector<int> rows = source_vertex;  // output vertex i copies input row rows[i]
@@ -397,16 +387,17 @@ void store_result(Mesh& mesh, const std::vector<int>& source_vertex, bool remove
     for (auto& f : F)
       for (int& v : f) v = new_index[v];
   }
-  if (static_cast<int>(rows.size()) != nv0 || remove_unreferenced) {
-    Eigen::MatrixXd V(static_cast<Eigen::Index>(rows.size()), 3);
-    for (std::size_t i = 0; i < rows.size(); ++i) V.row(static_cast<Eigen::Index>(i)) = mesh.V.row(rows[i]);
-    mesh.V = std::move(V);
-    take_rows(mesh.vertex_colors, rows);
-    take_rows(mesh.uv, rows);
-    take_rows(mesh.vertex_normals, rows);
-  }
-  mesh.F.resize(static_cast<Eigen::Index>(F.size()), 3);
-  for (std::size_t f = 0; f < F.size(); ++f) mesh.F.row(static_cast<Eigen::Index>(f)) << F[f][0], F[f][1], F[f][2];
+  Mesh result;
+  result.V.resize(static_cast<Eigen::Index>(rows.size()), 3);
+  for (std::size_t i = 0; i < rows.size(); ++i) result.V.row(static_cast<Eigen::Index>(i)) = mesh.V.row(rows[i]);
+  result.F.resize(static_cast<Eigen::Index>(F.size()), 3);
+  for (std::size_t f = 0; f < F.size(); ++f) result.F.row(static_cast<Eigen::Index>(f)) << F[f][0], F[f][1], F[f][2];
+  const Eigen::VectorXi vertex_origin =
+      Eigen::Map<const Eigen::VectorXi>(rows.data(), static_cast<Eigen::Index>(rows.size()));
+  const Eigen::VectorXi face_origin =
+      Eigen::Map<const Eigen::VectorXi>(origin.data(), static_cast<Eigen::Index>(origin.size()));
+  r.attribute_notes = carry_attributes(mesh, result, vertex_origin, face_origin, flipped);
+  mesh = std::move(result);
 
   r.vertex_map.resize(nv0);
   for (int i = 0; i < nv0; ++i) r.vertex_map(i) = new_index[i];
@@ -435,8 +426,9 @@ RepairReport repair_mesh(Mesh& mesh, const RepairOptions& o) {
   std::vector<int> source_vertex(nv0);
   std::iota(source_vertex.begin(), source_vertex.end(), 0);
   if (o.split_non_manifold && !F.empty()) split_non_manifold_vertices(nv0, F, source_vertex, r);
-  if (o.orient && !F.empty()) orient_faces(mesh.V, source_vertex, F, r);
-  store_result(mesh, source_vertex, o.remove_unreferenced, F, r);
+  std::vector<bool> flipped;
+  if (o.orient && !F.empty()) orient_faces(mesh.V, source_vertex, F, flipped, r);
+  store_result(mesh, source_vertex, o.remove_unreferenced, F, origin, flipped, r);
   r.face_origin = Eigen::Map<const Eigen::VectorXi>(origin.data(), static_cast<Eigen::Index>(origin.size()));
   r.vertices_after = mesh.V.rows();
   r.faces_after = mesh.F.rows();

@@ -65,3 +65,33 @@ TEST(Mesh, ValidateRefusalsNameTheElementAndValue) {
   F(1, 2) = F(1, 0);
   EXPECT_EQ(refusal(t.V, F), "mesh: face 1 repeats a vertex (0, 3, 0)");
 }
+
+TEST(Mesh, ValidateAttributesNamesTheBadOne) {
+  Mesh m = test::grid(3);
+  EXPECT_NO_THROW(validate_attributes(m, "m"));
+  m.face_colors = Eigen::MatrixXd::Zero(m.F.rows(), 4);
+  m.vertex_colors = Eigen::MatrixXd::Zero(m.V.rows(), 4);
+  EXPECT_NO_THROW(validate_attributes(m, "m"));
+  auto expect_refused = [](const Mesh& bad, const std::string& part) {
+    try {
+      validate_attributes(bad, "m");
+      ADD_FAILURE() << "no InvalidInput for " << part;
+    } catch (const InvalidInput& e) {
+      EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+    }
+  };
+  Mesh a = m;
+  a.face_colors = Eigen::MatrixXd::Zero(m.F.rows() - 1, 3);
+  expect_refused(a, "face_colors must be empty or #F by 3 or 4");
+  Mesh b = m;
+  b.texcoords = Eigen::MatrixXd::Zero(2, 2);
+  b.face_texcoords = Eigen::MatrixXi::Constant(m.F.rows(), 3, 2);
+  expect_refused(b, "out of range [-1, 2)");
+  Mesh c = m;
+  c.face_materials = Eigen::VectorXi::Zero(m.F.rows());
+  expect_refused(c, "face_materials of face 0 is 0, out of range [-1, 0)");
+  Mesh d = m;
+  d.vertex_properties.push_back({"q", Eigen::VectorXd::Zero(2), ScalarType::Float32});
+  expect_refused(d, "vertex property 'q' must have #V values");
+  EXPECT_STREQ(scalar_type_name(ScalarType::UInt16), "ushort");
+}

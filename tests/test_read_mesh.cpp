@@ -507,9 +507,152 @@ TEST(NothingLost, HandWrittenObjWithColoursTexturesAndNormals) {
   EXPECT_EQ(m.uv.row(3), Eigen::RowVector2d(1, 1));
   ASSERT_EQ(m.vertex_normals.rows(), 4);
   EXPECT_EQ(m.vertex_normals.row(2), Eigen::RowVector3d(0, 0, 1));
-  // uv with seams (one vertex, two texture coordinates) cannot be per-vertex: dropped (`info`
-  // says so: cli/test_nothing_lost_cli.cpp).
+  // uv with seams (one vertex, two texture coordinates) cannot be per-vertex: kept per corner.
   write_bytes(d.file("seam.obj"), test::kObjWithUvSeams);
-  const Mesh s = read_mesh(d.file("seam.obj"));
+  ReadNotes notes;
+  const Mesh s = read_mesh(d.file("seam.obj"), notes);
   EXPECT_EQ(s.uv.size(), 0);
+  EXPECT_TRUE(notes.uv_seams);
+  ASSERT_EQ(s.texcoords.rows(), 5);
+  ASSERT_EQ(s.face_texcoords.rows(), 2);
+  EXPECT_EQ(s.face_texcoords.row(0), Eigen::RowVector3i(0, 1, 3));
+  EXPECT_EQ(s.face_texcoords.row(1), Eigen::RowVector3i(4, 3, 2));
+  EXPECT_EQ(s.texcoords.row(4), Eigen::RowVector2d(0.5, 0.5));
+}
+
+// ---- gzip and glTF ------------------------------------------------------------------------------
+
+TEST(ReadGzip, TruncatedCorruptAndFakeGzipAreRefusedNamingTheFile) {
+  TempDir d;
+  write_mesh(d.file("m.ply.gz"), test::grid(8));
+  const std::string good = read_bytes(d.file("m.ply.gz"));
+  write_bytes(d.file("cut.ply.gz"), good.substr(0, good.size() / 2));
+  expect_read_error(d.file("cut.ply.gz"), "truncated gzip file");
+  std::string bad = good;
+  for (std::size_t i = 20; i < 40 && i < bad.size(); ++i) bad[i] = static_cast<char>(bad[i] ^ 0x5a);
+  write_bytes(d.file("bad.ply.gz"), bad);
+  expect_read_error(d.file("bad.ply.gz"), "gzip file");
+  write_bytes(d.file("plain.obj.gz"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  expect_read_error(d.file("plain.obj.gz"), "not gzip data");
+  // Two concatenated members read as one file, as gunzip does.
+  write_mesh(d.file("t.obj.gz"), test::single_triangle());
+  const std::string one = read_bytes(d.file("t.obj.gz"));
+  write_bytes(d.file("two.obj.gz"), one + one);
+  EXPECT_EQ(read_mesh(d.file("two.obj.gz")).F.rows(), 2);
+}
+
+namespace {
+
+std::string base64_of(const std::string& in) {
+  static const char* const k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < in.size(); i += 3) {
+    const auto b = [&](std::size_t j) { return j < in.size() ? static_cast<unsigned char>(in[j]) : 0u; };
+    const std::uint32_t v = (b(i) << 16) | (b(i + 1) << 8) | b(i + 2);
+    out += k[(v >> 18) & 63];
+    out += k[(v >> 12) & 63];
+    out += i + 1 < in.size() ? k[(v >> 6) & 63] : '=';
+    out += i + 2 < in.size() ? k[v & 63] : '=';
+  }
+  return out;
+}
+
+/// A hand-written glTF: a unit square as 4 vertices + 6 uint16 indices, TEXCOORD_0 and a
+/// material with an external texture ("tex.png"), a node with a translation.
+std::string square_gltf() {
+  std::string bin;
+  auto put = [&bin](const void* p, std::size_t n) { bin.append(static_cast<const char*>(p), n); };
+  const float pos[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  const float uv[8] = {0, 1, 1, 1, 1, 0, 0, 0};  // glTF: origin at the top left
+  const std::uint16_t idx[6] = {0, 1, 2, 0, 2, 3};
+  put(pos, sizeof pos);
+  put(uv, sizeof uv);
+  put(idx, sizeof idx);
+  return R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
+"nodes":[{"mesh":0,"translation":[5,0,0],"name":"placed"}],
+"meshes":[{"name":"square","primitives":[{"attributes":{"POSITION":0,"TEXCOORD_0":1},"indices":2,"material":0}]}],
+"materials":[{"name":"painted","pbrMetallicRoughness":{"baseColorTexture":{"index":0},"baseColorFactor":[1,0.5,0.25,1]}}],
+"textures":[{"source":0}],"images":[{"uri":"tex.png"}],
+"buffers":[{"byteLength":92,"uri":"data:application/octet-stream;base64,)" +
+         base64_of(bin) + R"("}],
+"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":32},
+{"buffer":0,"byteOffset":80,"byteLength":12}],
+"accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},
+{"bufferView":1,"componentType":5126,"count":4,"type":"VEC2"},
+{"bufferView":2,"componentType":5123,"count":6,"type":"SCALAR"}]})";
+}
+
+}  // namespace
+
+TEST(ReadGltf, AHandWrittenSceneKeepsItsMaterialTextureAndNodes) {
+  TempDir d;
+  fs::create_directories(d.file("in"));
+  write_bytes(d.file("in/square.gltf"), square_gltf());
+  write_bytes(d.file("in/tex.png"), "not really a png, kept as it is");
+  const Mesh m = read_mesh(d.file("in/square.gltf"));
+  ASSERT_EQ(m.V.rows(), 4);
+  ASSERT_EQ(m.F.rows(), 2);
+  EXPECT_EQ(m.V.row(2), Eigen::RowVector3d(1, 1, 0));  // node transforms are not applied
+  ASSERT_EQ(m.uv.rows(), 4);                           // per-vertex (no seams), flipped to the bottom-left origin
+  EXPECT_EQ(m.uv.row(0), Eigen::RowVector2d(0, 0));
+  EXPECT_EQ(m.uv.row(2), Eigen::RowVector2d(1, 1));
+  EXPECT_EQ(m.material_names, std::vector<std::string>{"painted"});
+  EXPECT_EQ(m.face_materials, Eigen::Vector2i(0, 0));
+  EXPECT_EQ(m.group_names, std::vector<std::string>{"square"});
+  // Moved vertices written to another folder: the scene is the same, the texture still found.
+  Mesh moved = m;
+  moved.V.col(2).setConstant(0.25);
+  fs::create_directories(d.file("out"));
+  for (const std::string name : {"out/square.glb", "out/square.gltf"}) {
+    SCOPED_TRACE(name);
+    write_mesh(d.file(name), moved);
+    const std::string bytes = read_bytes(d.file(name));
+    for (const char* kept : {"\"painted\"", "baseColorFactor", "\"translation\"", "\"placed\"", "../in/tex.png"})
+      EXPECT_NE(bytes.find(kept), std::string::npos) << kept;
+    const Mesh r = read_mesh(d.file(name));
+    EXPECT_TRUE(r.V == moved.V);
+    EXPECT_TRUE(r.F == moved.F);
+    EXPECT_TRUE(r.uv == moved.uv);
+    EXPECT_EQ(r.material_names, m.material_names);
+  }
+}
+
+TEST(ReadGltf, BrokenFilesAreRefusedNamingTheFile) {
+  TempDir d;
+  write_bytes(d.file("junk.glb"), std::string("glTF\x02\0\0\0garbage", 15));
+  expect_read_error(d.file("junk.glb"), "not a valid GLB file");
+  write_bytes(d.file("junk.gltf"), "{\"asset\": ");
+  expect_read_error(d.file("junk.gltf"), "not a valid glTF file");
+  std::string s = square_gltf();
+  s.replace(s.find("\"count\":6"), 9, "\"count\":60");  // indices past the end of their bufferView
+  write_bytes(d.file("short.gltf"), s);
+  expect_read_error(d.file("short.gltf"), "runs past the end of its bufferView");
+  std::string t = square_gltf();
+  t.replace(t.find("\"POSITION\":0,"), 13, "");
+  write_bytes(d.file("nopos.gltf"), t);
+  expect_read_error(d.file("nopos.gltf"), "has no POSITION attribute");
+}
+
+TEST(ReadObj, RecordsThatAreNotKeptAreNamed) {
+  TempDir d;
+  write_bytes(d.file("m.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\ns 1\nl 1 2\ncurv 0 1 1 2\nf 1 2 3\n");
+  ReadNotes notes;
+  read_mesh(d.file("m.obj"), notes);
+  ASSERT_EQ(notes.dropped.size(), 3u);
+  EXPECT_EQ(notes.dropped[0], "1 OBJ line elements ('l') are not kept");
+  EXPECT_EQ(notes.dropped[1], "OBJ smoothing groups ('s') are not kept (normals are recomputed)");
+  EXPECT_EQ(notes.dropped[2], "1 OBJ records of unknown kind (the first 'curv') are not kept");
+}
+
+TEST(FuzzRegressions, GltfAndGzipSeedsReadValid) {
+  for (const char* fmt : {"gltf", "glb", "obj.gz"}) {
+    const auto files = files_in(kSource / "fuzz/corpus" / fmt);
+    EXPECT_GE(files.size(), 1u) << "no seed corpus for " << fmt << " (python3 fuzz/make_corpus.py)";
+    for (const fs::path& p : files) {
+      SCOPED_TRACE(p.string());
+      const msmesh::Mesh m = msmesh::read_mesh_from_memory(bytes_of(p), fmt, p.string());
+      EXPECT_EQ(msmesh::fuzz::mesh_problem(m), "");
+      EXPECT_EQ(m.F.rows(), 4);
+    }
+  }
 }

@@ -128,3 +128,45 @@ TEST(Repair, SplitsNonManifoldVerticesAndEdgesCarryingAttributes) {
   EXPECT_EQ(r.split_vertices, 1);
   EXPECT_EQ(bow.F(1, 0), 5);
 }
+
+TEST(Repair, AttributesFollowTheirVerticesFacesAndCorners) {
+  // Flipped faces with per-corner texture coordinates (a seam), face colours, materials, a
+  // duplicate face and a vertex property: after repair each corner keeps the texture
+  // coordinates of its vertex in that face, each face its colour and material.
+  Mesh m = test::grid_with_flipped_faces();
+  const Eigen::Index nv = m.V.rows(), nf = m.F.rows();
+  m.texcoords.resize(2 * nv, 2);
+  m.face_texcoords.resize(nf, 3);
+  m.face_colors.resize(nf, 3);
+  m.material_names = {"a", "b"};
+  m.face_materials.resize(nf);
+  for (Eigen::Index i = 0; i < nv; ++i) {
+    m.texcoords.row(i) = m.V.row(i).head<2>();
+    m.texcoords.row(nv + i) = m.V.row(i).head<2>() + Eigen::RowVector2d(5, 0);
+  }
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    const int chart = f % 2;
+    for (int k = 0; k < 3; ++k) m.face_texcoords(f, k) = m.F(f, k) + chart * static_cast<int>(nv);
+    m.face_colors.row(f) << f / double(nf), 0.5, chart;
+    m.face_materials(f) = chart;
+  }
+  m.vertex_properties.push_back({"q", Eigen::VectorXd::LinSpaced(nv, 0, 1), ScalarType::Float32});
+  const Mesh before = m;
+  const RepairReport r = repair_mesh(m);
+  ASSERT_GT(r.flipped_faces, 0);
+  ASSERT_EQ(m.face_texcoords.rows(), m.F.rows());
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
+    const int o = r.face_origin(f);
+    EXPECT_EQ(m.face_colors.row(f), before.face_colors.row(o));
+    EXPECT_EQ(m.face_materials(f), before.face_materials(o));
+    for (int k = 0; k < 3; ++k) {
+      // The source corner of the same vertex (vertex order is kept: no renumbering here).
+      int j = 0;
+      while (j < 3 && before.F(o, j) != m.F(f, k)) ++j;
+      ASSERT_LT(j, 3);
+      EXPECT_EQ(m.texcoords.row(m.face_texcoords(f, k)), before.texcoords.row(before.face_texcoords(o, j)));
+    }
+  }
+  EXPECT_TRUE(m.vertex_properties[0].values == before.vertex_properties[0].values);
+  EXPECT_TRUE(r.attribute_notes.empty());
+}

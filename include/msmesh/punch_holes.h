@@ -12,6 +12,7 @@ struct PunchResult {
   Eigen::MatrixXi F;           ///< #F' by 3 the remaining faces, in their input order, re-indexed
   Eigen::VectorXi vertex_map;  ///< #V' : input row of each output vertex
   Eigen::VectorXi old_to_new;  ///< #V  : output row of each input vertex, -1 when removed
+  Eigen::VectorXi face_map;    ///< #F' : input face of each output face
   std::vector<int> centers;    ///< input vertex at the centre of each hole punched
   int punched = 0;             ///< holes made (fewer than asked when no room was left)
 };

@@ -62,6 +62,9 @@ struct RepairReport {
   Eigen::VectorXi vertex_map;
   /// #F_after: input face each output face comes from (face order is kept).
   Eigen::VectorXi face_origin;
+  /// What happened to the attributes (carry_attributes, mesh_attributes.h), e.g. per-vertex
+  /// texture coordinates that became per-corner when merged vertices had different ones.
+  std::vector<std::string> attribute_notes;
 
   /// True when the mesh was changed.
   bool changed() const;
@@ -69,8 +72,9 @@ struct RepairReport {
   std::vector<std::string> actions() const;
 };
 
-/// Repairs `mesh` in place: V, F and the per-vertex attributes (colours, uv, normals) are kept
-/// consistent. Vertex order is kept (new vertices from splitting are appended) unless
+/// Repairs `mesh` in place: V, F and every attribute (mesh.h) are kept consistent: per-vertex
+/// ones follow their vertices, per-face ones their faces (texture coordinates their corners,
+/// also on flipped faces). Vertex order is kept (new vertices from splitting are appended) unless
 /// remove_unreferenced; face order is kept apart from removed faces. Throws InvalidInput for
 /// non-finite coordinates or out-of-range indices (which cannot be repaired meaningfully).
 RepairReport repair_mesh(Mesh& mesh, const RepairOptions& options = {});

@@ -14,6 +14,7 @@ after every iteration; returning False cancels the call (Cancelled), returning N
 continues; an exception it raises is re-raised by the call.
 """
 
+import dataclasses
 import os
 from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
@@ -52,7 +53,7 @@ Progress = Optional[Callable[[ProgressEvent], Optional[bool]]]
 __all__ = [
     "denoise", "filter_normals", "update_vertices", "add_noise", "evaluate", "choose_preset", "estimate_noise",
     "taubin_smooth",
-    "read_mesh", "write_mesh", "repair", "make_shape", "shape_names", "preset_names", "PARAMETERS",
+    "read_mesh", "write_mesh", "Mesh", "repair", "make_shape", "shape_names", "preset_names", "PARAMETERS",
     "render", "compare", "info", "report", "write_png", "view_names", "up_axis_names", "RENDER_PARAMETERS",
     "set_threads", "threads",
     "Error", "InvalidInputError", "IoError", "SolverError", "Cancelled", "ProgressEvent",
@@ -346,19 +347,177 @@ def evaluate(V: ArrayLike, F: ArrayLike, V_truth: ArrayLike, F_truth: ArrayLike)
     return _core.evaluate(V, F, V_truth, F_truth)
 
 
-def read_mesh(path):
-    """Reads OBJ, OFF, PLY or STL (by extension); returns (V, F). Raises IoError (an OSError).
-    Polygons are triangulated; faces repeating a vertex are dropped."""
-    V, F, _dropped = _core.read_mesh(_checks.path(path))
-    return V, F
+@dataclasses.dataclass
+class Mesh:
+    """A mesh and every attribute its file carries, as :func:`read_mesh` returns it with
+    ``attributes=True`` and :func:`write_mesh` takes it (the C++ ``msmesh::Mesh``, mesh.h).
+
+    Arrays are numpy arrays; an absent attribute is None (lists and dicts: empty).
+
+    Attributes
+    ----------
+    V : ndarray, shape (#V, 3), float64
+        Vertex positions.
+    F : ndarray, shape (#F, 3), int32
+        Triangles, counter-clockwise seen from outside.
+    vertex_colors : ndarray, shape (#V, 3) or (#V, 4), optional
+        RGB or RGBA in [0, 1].
+    uv : ndarray, shape (#V, 2), optional
+        Per-vertex texture coordinates (origin at the bottom left, as in OBJ and PLY).
+    vertex_normals : ndarray, shape (#V, 3), optional
+    face_colors : ndarray, shape (#F, 3) or (#F, 4), optional
+        RGB or RGBA in [0, 1] per face (PLY).
+    texcoords : ndarray, shape (#T, 2), optional
+        Table of per-corner texture coordinates (textures with seams) ...
+    face_texcoords : ndarray, shape (#F, 3), int32, optional
+        ... and, per face corner, its index into `texcoords` (-1: none).
+    material_libraries : list of str
+        OBJ ``mtllib`` paths, from the current folder (the .mtl file is referenced, not copied).
+    material_names : list of str
+    face_materials : ndarray, shape (#F,), int32, optional
+        Index into `material_names` per face (-1: none); OBJ ``usemtl``, glTF materials.
+    group_names, object_names : list of str
+    face_groups, face_objects : ndarray, shape (#F,), int32, optional
+        OBJ ``g`` groups and ``o`` objects (glTF: one group per primitive), -1: none.
+    vertex_properties : dict of str to ndarray, shape (#V,)
+        Extra per-vertex scalars (PLY ``quality``, ``intensity``, ...).
+    vertex_property_types : dict of str to str
+        Their types in the file ("uint8", "float32", ...; default "float64"), kept on writing.
+    position_type : str
+        "float32" when the file stored float coordinates (written as float again), else "float64".
+    gltf_document : bytes, optional
+        The source glTF scene (a GLB): writing a .gltf/.glb keeps its materials, textures and nodes.
+    notes : list of str
+        What reading dropped (never written; informative).
+    """
+
+    V: np.ndarray
+    F: np.ndarray
+    vertex_colors: Optional[np.ndarray] = None
+    uv: Optional[np.ndarray] = None
+    vertex_normals: Optional[np.ndarray] = None
+    face_colors: Optional[np.ndarray] = None
+    texcoords: Optional[np.ndarray] = None
+    face_texcoords: Optional[np.ndarray] = None
+    material_libraries: List[str] = dataclasses.field(default_factory=list)
+    material_names: List[str] = dataclasses.field(default_factory=list)
+    face_materials: Optional[np.ndarray] = None
+    group_names: List[str] = dataclasses.field(default_factory=list)
+    face_groups: Optional[np.ndarray] = None
+    object_names: List[str] = dataclasses.field(default_factory=list)
+    face_objects: Optional[np.ndarray] = None
+    vertex_properties: Dict[str, np.ndarray] = dataclasses.field(default_factory=dict)
+    vertex_property_types: Dict[str, str] = dataclasses.field(default_factory=dict)
+    position_type: str = "float64"
+    gltf_document: Optional[bytes] = None
+    notes: List[str] = dataclasses.field(default_factory=list)
 
 
-def write_mesh(path, V, F, binary=True):
-    """Writes OBJ, OFF, PLY or STL (by extension; PLY and STL binary unless binary=False).
-    The file appears completely or not at all. Raises IoError (an OSError)."""
+_MESH_FIELDS = tuple(f.name for f in dataclasses.fields(Mesh))
+_ATTRIBUTES = tuple(n for n in _MESH_FIELDS if n not in ("V", "F", "notes"))
+
+
+def read_mesh(path, attributes: bool = False) -> Union[Tuple[np.ndarray, np.ndarray], Mesh]:
+    """Reads a mesh file: OBJ, OFF, PLY, STL, glTF (.gltf, .glb), each optionally gzip-compressed
+    (``.obj.gz``, ``.ply.gz``, ...), by extension.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+    attributes : bool, default False
+        False: return ``(V, F)`` only (as before). True: return a :class:`Mesh` with every
+        attribute the file carries (colours, alpha, uv, per-corner texture coordinates,
+        normals, face colours, materials, groups, extra vertex properties, glTF scene) and
+        ``notes`` naming what the file had that is not kept.
+
+    Returns
+    -------
+    (V, F) : tuple of ndarray, or Mesh
+
+    Raises
+    ------
+    IoError
+        Missing, unreadable, truncated or malformed file (also a corrupt gzip stream).
+
+    Notes
+    -----
+    Polygons are triangulated; faces repeating a vertex are dropped.
+    """
     path = _checks.path(path)
+    if not _checks.boolean(attributes, "attributes"):
+        V, F, _dropped = _core.read_mesh(path)
+        return V, F
+    d = _core.read_mesh_attributes(path)
+    d.pop("dropped_degenerate", None)
+    return Mesh(**d)
+
+
+def write_mesh(path, V, F=None, binary: bool = True, **attributes) -> List[str]:
+    """Writes a mesh file; the format follows the extension (OBJ, OFF, PLY, STL, .gltf, .glb;
+    add ``.gz`` to compress). The file appears completely or not at all.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+    V : ndarray (#V, 3) or Mesh
+        Vertex positions, or a :class:`Mesh` (then F and the attributes come from it).
+    F : ndarray (#F, 3), optional
+        Triangles (required unless V is a Mesh).
+    binary : bool, default True
+        PLY and STL: binary (True) or ascii.
+    **attributes
+        Any :class:`Mesh` attribute by name (``vertex_colors=...``, ``uv=...``,
+        ``face_colors=...``, ``vertex_normals=...``, ...); with a Mesh, they replace its own.
+
+    Returns
+    -------
+    list of str
+        What the format could not hold and was not written (e.g. "STL cannot hold vertex
+        colours: not written"); empty when everything was written.
+
+    Raises
+    ------
+    InvalidInputError
+        Bad shapes, indices or values (nothing written).
+    IoError
+        Unknown extension or a file-system failure.
+    """
+    path = _checks.path(path)
+    binary = _checks.boolean(binary, "binary")
+    unknown = sorted(set(attributes) - set(_ATTRIBUTES))
+    if unknown:
+        raise InvalidInputError("write_mesh: unknown attribute(s) " + ", ".join(unknown) +
+                                "; valid: " + ", ".join(_ATTRIBUTES))
+    if isinstance(V, Mesh):
+        if F is not None:
+            raise InvalidInputError("write_mesh: give F only with a V array, not with a Mesh")
+        d = {n: getattr(V, n) for n in _MESH_FIELDS if n != "notes"}
+        V, F = d["V"], d["F"]
+    else:
+        if F is None:
+            raise InvalidInputError("write_mesh: F is required (or pass a Mesh as V)")
+        d = {}
+    d.update(attributes)
     V, F = _checks.mesh(V, F, allow_empty_faces=True)
-    _core.write_mesh(path, V, F, _checks.boolean(binary, "binary"))
+    def empty(x):
+        return x is None or (isinstance(x, (list, dict, tuple, str)) and (len(x) == 0 or x == "float64"))
+
+    if all(empty(d.get(n)) for n in _ATTRIBUTES):
+        _core.write_mesh(path, V, F, binary)
+        return []
+    d["V"], d["F"] = V, F
+    for name in ("vertex_colors", "uv", "vertex_normals", "face_colors", "texcoords"):
+        if d.get(name) is not None:
+            d[name] = np.asarray(d[name], dtype=np.float64)
+    for name in ("face_texcoords", "face_materials", "face_groups", "face_objects"):
+        if d.get(name) is not None:
+            d[name] = np.asarray(d[name], dtype=np.int32)
+    if d.get("vertex_properties"):
+        d["vertex_properties"] = {str(k): np.asarray(v, dtype=np.float64).reshape(-1)
+                                  for k, v in d["vertex_properties"].items()}
+    if d.get("gltf_document") is not None:
+        d["gltf_document"] = bytes(d["gltf_document"])
+    return list(_core.write_mesh_attributes(path, d, binary))
 
 
 def repair(V: ArrayLike, F: ArrayLike, weld: float = 0.0, merge_duplicate_vertices: bool = True,

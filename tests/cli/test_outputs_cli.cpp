@@ -344,8 +344,8 @@ TEST(AllOrNothing, OutputNamesAndFoldersAreCheckedBeforeAnyWork) {
     std::string message;
   };
   const Case cases[] = {
-      {"denoise " + in + " -o " + q(s.d.file("x.glb")), 2, "-o " + s.d.file("x.glb") + ": unknown mesh format '.glb'"},
-      {"shape sphere --resolution 400 -o " + q(s.d.file("x.glb")), 2, "unknown mesh format"},
+      {"denoise " + in + " -o " + q(s.d.file("x.xyz")), 2, "-o " + s.d.file("x.xyz") + ": unknown mesh format '.xyz'"},
+      {"shape sphere --resolution 400 -o " + q(s.d.file("x.xyz.gz")), 2, "unknown mesh format '.xyz' under .gz"},
       {"denoise " + in + " -o " + q(s.prev) + " --report " + q(s.d.file("missing/r.html")), 1,
        "the folder '" + s.d.file("missing") + "' does not exist"},
       {"denoise " + in + " -o " + q(s.prev) + " --save-field " + q(s.d.file("prev.obj/f.txt")), 1, "is not a folder"},
