@@ -113,7 +113,7 @@ void run(const Args& a) {
         .add("dropped_degenerate_faces", static_cast<long long>(dropped))
         .add("vertex_colors", mesh.vertex_colors.size() > 0)
         .add("texture_coordinates", mesh.uv.size() > 0)
-        .add("texture_coordinates_with_seams", notes.uv_dropped)
+        .add("texture_coordinates_with_seams", notes.uv_seams)
         .add("vertex_normals", notes.had_normals)
         .add("area", st.area);
     if (st.closed_components > 0)
@@ -165,8 +165,8 @@ void run(const Args& a) {
             << "  dropped degenerate faces:      " << dropped << "\n";
   if (mesh.vertex_colors.size() > 0) std::cout << "  vertex colours:                yes\n";
   if (mesh.uv.size() > 0) std::cout << "  texture coordinates:           yes (per vertex)\n";
-  if (notes.uv_dropped)
-    std::cout << "  texture coordinates:           with seams (per corner): not read, not carried over\n";
+  if (notes.uv_seams)
+    std::cout << "  texture coordinates:           with seams (per corner; kept by every command)\n";
   if (notes.had_normals) std::cout << "  vertex normals:                yes (recomputed when vertices move)\n";
   if (st.per_component.size() > 1) {
     std::cout << "  components (in the order of their first face; "
