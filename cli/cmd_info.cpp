@@ -165,8 +165,7 @@ void run(const Args& a) {
             << "  dropped degenerate faces:      " << dropped << "\n";
   if (mesh.vertex_colors.size() > 0) std::cout << "  vertex colours:                yes\n";
   if (mesh.uv.size() > 0) std::cout << "  texture coordinates:           yes (per vertex)\n";
-  if (notes.uv_seams)
-    std::cout << "  texture coordinates:           with seams (per corner; kept by every command)\n";
+  if (notes.uv_seams) std::cout << "  texture coordinates:           with seams (per corner; kept by every command)\n";
   if (notes.had_normals) std::cout << "  vertex normals:                yes (recomputed when vertices move)\n";
   if (st.per_component.size() > 1) {
     std::cout << "  components (in the order of their first face; "
