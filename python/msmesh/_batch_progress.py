@@ -6,6 +6,12 @@ import time
 from typing import Optional, TextIO
 
 
+def failure(record: dict) -> str:
+    """'INPUT: ERROR' (the error alone when it already starts with the input)."""
+    error, name = str(record.get("error", "")), str(record.get("input", ""))
+    return error if error.startswith(name + ":") else f"{name}: {error}"
+
+
 class Progress:
     def __init__(self, total: int, stream: Optional[TextIO] = None, quiet: bool = False):
         self.total, self.done, self.failed, self.running = total, 0, 0, 0
@@ -42,12 +48,12 @@ class Progress:
             return
         if not self.tty:
             n = self.done + self.failed
-            what = "ok" if record.get("status") == "ok" else "FAILED: " + str(record.get("error", ""))
-            self.stream.write(f"[{n}/{self.total}] {record.get('input')}: {what} ({record.get('seconds', 0)} s)\n")
+            what = f"{record.get('input')}: ok" if record.get("status") == "ok" else "FAILED: " + failure(record)
+            self.stream.write(f"[{n}/{self.total}] {what} ({record.get('seconds', 0)} s)\n")
             self.stream.flush()
         else:
             if record.get("status") != "ok":
-                self.stream.write("\r\033[K" + f"failed: {record.get('input')}: {record.get('error', '')}\n")
+                self.stream.write("\r\033[K" + f"failed: {failure(record)}\n")
             self.draw()
 
     def close(self) -> None:

@@ -21,7 +21,7 @@ from typing import Any, Dict, List, Optional, Sequence
 from . import _batch_results as results
 from ._batch_inputs import BatchInputError, collect_tasks, output_relative, split_arguments, truth_for
 from ._batch_memory import face_count, format_bytes, memory_estimate, parse_bytes
-from ._batch_progress import Progress
+from ._batch_progress import Progress, failure
 from ._batch_task import run_task
 from ._cli import program_path
 
@@ -207,13 +207,14 @@ def run(command: str, inputs: Sequence[str], output_dir: str, options: Sequence[
             lock = threading.Lock()
             stop = threading.Event()
 
+            left = [len(futures)]  # tasks not finished yet; at most one per worker thread runs
+
             def redraw():
                 while not stop.wait(0.5):
                     with lock:
-                        left = len(futures) - sum(f.done() for f in futures)
-                        progress.running = min(left, capacity["threads"])
                         progress.draw()
 
+            progress.running = min(left[0], capacity["threads"])
             drawer = threading.Thread(target=redraw, daemon=True)
             drawer.start()
             try:
@@ -229,6 +230,8 @@ def run(command: str, inputs: Sequence[str], output_dir: str, options: Sequence[
                     with lock:
                         records[spec["index"]] = record
                         journal.add(record)
+                        left[0] -= 1
+                        progress.running = min(left[0], capacity["threads"])
                         progress.finished(record)
             finally:
                 stop.set()
@@ -331,7 +334,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
               f"{len(failed)} failed, in {seconds:.1f} s -> {a['output_dir']} "
               f"(results.csv, results.jsonl, index.html)")
         for r in failed:
-            print(f"  failed: {r['input']}: {r.get('error', '')}")
+            print(f"  failed: {failure(r)}")
     return 1 if failed else 0
 
 
