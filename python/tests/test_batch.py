@@ -1,6 +1,7 @@
 """msmesh batch (msmesh.batch, docs/batch.md) on a local Dask cluster of two workers: outputs
 identical bit for bit to single `msmesh denoise` runs, a worker killed in the middle of the run,
-resuming, bad files among good ones, manifests, the memory limit, the command line.
+resuming, bad files among good ones, a crash of msmesh, manifests, the memory limit, the command
+line.
 
 Needs the msmesh program (MSMESH_CLI or beside the module) and python3-distributed; skipped
 without them. About a minute on two busy cores.
@@ -290,3 +291,21 @@ def test_command_line(meshes, tmp_path):
     assert "3 done" in ran.stdout and ran.stderr.count("ok") == 3  # plain progress lines: not a terminal
     msmesh_run("denoise", inputs[0], "-o", tmp_path / "single.obj", "--ascii", "-q")
     assert (tmp_path / "o" / os.path.basename(inputs[0])).read_bytes() == (tmp_path / "single.obj").read_bytes()
+
+
+def test_a_crash_of_msmesh_fails_its_mesh_only(meshes, client, tmp_path):
+    """msmesh killed by a signal on one mesh (here a wrapper sends itself SIGSEGV for it): that
+    mesh is recorded with the signal, the others are done and the workers live on."""
+    root, relatives = meshes
+    wrapper = tmp_path / "crashing-msmesh"
+    wrapper.write_text(f"#!/bin/sh\ncase \"$2\" in *{os.path.basename(relatives[1])}) kill -SEGV $$;; esac\n"
+                       f"exec {PROGRAM} \"$@\"\n")
+    wrapper.chmod(0o755)
+    workers = set(client.scheduler_info()["workers"])
+    inputs = [str(root / "in" / r) for r in relatives[:4]]
+    records = batch.run("denoise", inputs, str(tmp_path / "out"), client=client, program=str(wrapper),
+                        thumbnails=False)
+    assert [r["status"] for r in records] == ["ok", "failed", "ok", "ok"]
+    assert "killed by signal 11 (SIGSEGV)" in records[1]["error"]
+    assert not (tmp_path / "out" / os.path.basename(relatives[1])).exists()
+    assert set(client.scheduler_info()["workers"]) == workers
