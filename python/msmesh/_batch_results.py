@@ -39,10 +39,10 @@ def load(output_dir: str) -> Dict[str, Dict[str, Any]]:
     return records
 
 
-def up_to_date(record: Dict[str, Any], key: str, paths: Iterable[str]) -> bool:
-    """True when a previous record is a success with the same options key and its output exists
-    and is newer than the input (and the truth)."""
-    if not record or record.get("status") != "ok" or record.get("options") != key:
+def up_to_date(record: Dict[str, Any], key: str, output: str, paths: Iterable[str]) -> bool:
+    """True when a previous record is a success with the same options key and output, and that
+    output exists and is newer than the input (and the truth)."""
+    if not record or record.get("status") != "ok" or record.get("options") != key or record.get("output") != output:
         return False
     try:
         out_time = os.stat(record["output"]).st_mtime_ns

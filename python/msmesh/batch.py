@@ -163,7 +163,7 @@ def run(command: str, inputs: Sequence[str], output_dir: str, options: Sequence[
                 "program": program, "options_key": key, "index": i,
                 "thumbnail": os.path.abspath(os.path.join(output_dir, THUMBNAILS, t.relative + ".png"))
                 if thumbnails else None}
-        if not force and results.up_to_date(previous.get(source, {}), key, [source, spec["truth"]]):
+        if not force and results.up_to_date(previous.get(source, {}), key, out, [source, spec["truth"]]):
             records[i] = dict(previous[source], reused=True)
             continue
         specs.append(spec)

@@ -120,6 +120,11 @@ def test_resume_skips_what_is_done(meshes, client, tmp_path):
     assert not any(r["reused"] for r in fifth)
     msmesh_run("denoise", inputs / relatives[0], "-o", tmp_path / "single.obj", "--strength", "0.5", "-q")
     assert (out / relatives[0]).read_bytes() == (tmp_path / "single.obj").read_bytes()
+    # Another output format: other outputs, so every mesh again but those that were PLY already.
+    as_ply = batch.run("denoise", [str(inputs)], str(out), ["--strength", "0.5"], client=client, thumbnails=False,
+                       extension=".ply")
+    assert all(r["output"].endswith(".ply") for r in as_ply)
+    assert [r["reused"] for r in as_ply] == [r["input"].endswith(".ply") for r in as_ply]
     # --force: everything again.
     sixth = batch.run("denoise", [str(inputs)], str(out), ["--strength", "0.5"], client=client, thumbnails=False,
                       force=True)
