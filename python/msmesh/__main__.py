@@ -1,4 +1,5 @@
-"""``python -m msmesh ARGS...`` runs the msmesh program: ``msmesh ARGS...`` (msmesh._cli)."""
+"""``python -m msmesh ARGS...`` runs the msmesh program: ``msmesh ARGS...`` (msmesh._cli);
+``python -m msmesh batch ...`` runs the batch runner (msmesh.batch) in this interpreter."""
 
 import sys
 

@@ -53,7 +53,15 @@ def run(args: Sequence[str]) -> int:
 def main(argv: Optional[List[str]] = None) -> int:
     """Entry point of the `msmesh` command and of ``python -m msmesh``: replaces this process
     with the program (same arguments, streams, signals and exit status). With ``argv`` given, runs
-    it as a child process instead and returns its exit status (see run)."""
+    it as a child process instead and returns its exit status (see run). ``batch ...`` runs
+    msmesh.batch.main in this interpreter."""
+    args = sys.argv[1:] if argv is None else list(argv)
+    if args[:1] == ["batch"]:
+        # The batch runner is Python: run it here rather than through the program, which would
+        # start this interpreter again (cli/cmd_batch.cpp).
+        from . import batch
+
+        return batch.main(args[1:])
     if argv is not None:
         return run(argv)
     program = program_path()
