@@ -120,12 +120,7 @@ void fill_face_attributes(const Soup& soup, const std::vector<int>& tri_polygon,
             static_cast<int>(tri_texcoord[static_cast<std::size_t>(t)][static_cast<std::size_t>(k)]);
   }
   const Mesh& x = soup.extra;
-  mesh.material_libraries = x.material_libraries;
-  mesh.material_names = x.material_names;
-  mesh.group_names = x.group_names;
-  mesh.object_names = x.object_names;
-  mesh.position_type = x.position_type;
-  mesh.gltf_document = x.gltf_document;
+  copy_document_attributes(x, mesh);
   for (const VertexProperty& p : x.vertex_properties)
     if (p.values.size() == nv) mesh.vertex_properties.push_back(p);
 }

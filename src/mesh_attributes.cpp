@@ -107,6 +107,15 @@ bool corner_uv_to_vertex_uv(Mesh& m) {
   return true;
 }
 
+void copy_document_attributes(const Mesh& source, Mesh& result) {
+  result.material_libraries = source.material_libraries;
+  result.material_names = source.material_names;
+  result.group_names = source.group_names;
+  result.object_names = source.object_names;
+  result.position_type = source.position_type;
+  result.gltf_document = source.gltf_document;
+}
+
 std::vector<std::string> carry_attributes(const Mesh& s, Mesh& r, const Eigen::VectorXi& vertex_origin,
                                           const Eigen::VectorXi& face_origin, const std::vector<bool>& flipped) {
   const Eigen::Index nv = r.V.rows(), nf = r.F.rows();
@@ -122,13 +131,7 @@ std::vector<std::string> carry_attributes(const Mesh& s, Mesh& r, const Eigen::V
   const Eigen::Index new_vertices = (vertex_origin.array() < 0).count();
   const Eigen::Index new_faces = (face_origin.array() < 0).count();
 
-  // Document-level data.
-  r.material_libraries = s.material_libraries;
-  r.material_names = s.material_names;
-  r.group_names = s.group_names;
-  r.object_names = s.object_names;
-  r.position_type = s.position_type;
-  r.gltf_document = s.gltf_document;
+  copy_document_attributes(s, r);
 
   // Per-vertex attributes.
   const bool vertex_attributes =

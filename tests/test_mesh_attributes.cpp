@@ -148,3 +148,22 @@ TEST(HasAttributes, OnlyVAndFIsNone) {
   m.face_groups = Eigen::VectorXi::Zero(m.F.rows());
   EXPECT_TRUE(has_attributes(m));
 }
+
+TEST(DocumentAttributes, AreCopiedWholeAndNothingElse) {
+  Mesh s = test::grid(3);
+  s.material_libraries = {"a.mtl"};
+  s.material_names = {"red", "blue"};
+  s.group_names = {"g1"};
+  s.object_names = {"o1"};
+  s.position_type = ScalarType::Float32;
+  Mesh r = test::grid(2);
+  const Eigen::MatrixXd V = r.V;
+  copy_document_attributes(s, r);
+  EXPECT_EQ(r.material_libraries, s.material_libraries);
+  EXPECT_EQ(r.material_names, s.material_names);
+  EXPECT_EQ(r.group_names, s.group_names);
+  EXPECT_EQ(r.object_names, s.object_names);
+  EXPECT_EQ(r.position_type, s.position_type);
+  EXPECT_EQ(r.V, V);  // geometry untouched
+  EXPECT_EQ(r.vertex_colors.size(), 0);
+}

@@ -27,6 +27,11 @@ namespace msmesh {
 std::vector<std::string> carry_attributes(const Mesh& source, Mesh& result, const Eigen::VectorXi& vertex_origin,
                                           const Eigen::VectorXi& face_origin, const std::vector<bool>& flipped = {});
 
+/// Copies the attributes that belong to the whole file rather than to vertices or faces: the
+/// material libraries, the material, group and object names, the position type and the glTF
+/// document (carry_attributes does this too).
+void copy_document_attributes(const Mesh& source, Mesh& result);
+
 /// True when `mesh` has any attribute besides V and F.
 bool has_attributes(const Mesh& mesh);
 
