@@ -5,6 +5,7 @@
 #include <sstream>
 #include <vector>
 
+#include "masked_measures.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
 #include "msmesh/taubin.h"
@@ -41,6 +42,11 @@ std::string NoiseEstimate::summary() const {
 
 NoiseEstimate estimate_noise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   validate_mesh(V, F, "noise estimate");
+  return detail::estimate_noise_masked(V, F, nullptr);
+}
+
+NoiseEstimate detail::estimate_noise_masked(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                                            const std::vector<char>* measured) {
   NoiseEstimate e;
   if (F.rows() == 0) return e;
   TaubinOptions to;
@@ -54,7 +60,9 @@ NoiseEstimate estimate_noise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F)
   std::vector<double> d;
   d.reserve(static_cast<std::size_t>(V.rows()));
   for (Eigen::Index i = 0; i < V.rows(); ++i)
-    if (used[static_cast<std::size_t>(i)]) d.push_back((V.row(i) - S.row(i)).dot(N.row(i)) / scale);
+    if (used[static_cast<std::size_t>(i)] && (!measured || (*measured)[static_cast<std::size_t>(i)]))
+      d.push_back((V.row(i) - S.row(i)).dot(N.row(i)) / scale);
+  if (d.empty()) return e;
   const double m = median(d);
   std::vector<double> a(d.size());
   double sum2 = 0;

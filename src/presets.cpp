@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "masked_measures.h"
 #include "msmesh/bilateral.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
@@ -11,6 +12,7 @@
 #include "msmesh/noise_estimate.h"
 #include "msmesh/taubin.h"
 #include "msmesh/topology.h"
+#include "patch_sample.h"
 
 namespace msmesh {
 
@@ -37,6 +39,12 @@ constexpr int kPrefilterMax = 5;
 //   the fairness term (v ≈ 1 everywhere on organic shapes) flattens curvature the input still has,
 //   so it is weak at low noise and reaches its full weight at σ 0.4.
 constexpr double kFairnessFrom = 0.1, kFairnessSpan = 0.3, kFairnessMinShare = 0.1;
+
+// Meshes above kSampleAboveFaces faces are measured on kSamplePatches patches of
+// kSamplePatchFaces faces, away from the cuts by kSampleMargin rings (about as far as the
+// Taubin low pass and the bilateral pre-smoothing reach). 32 x 6000 faces: ~90K core faces.
+constexpr Eigen::Index kSampleAboveFaces = 400000, kSamplePatches = 32, kSamplePatchFaces = 6000;
+constexpr int kSampleMargin = 10;
 
 int prefilter_for(double sigma) {
   return static_cast<int>(
@@ -80,6 +88,7 @@ DenoiseOptions preset_options(const std::string& name) {
     o.normals.rho = 0.9;
     o.normals.penalty = 1.0;
     o.normals.project_each_iteration = true;
+    o.vertices.tolerance = 1e-6;
     return o;
   }
   if (name == "auto") throw InvalidInput("preset 'auto' is chosen from the mesh: use resolve_preset(\"auto\", V, F)");
@@ -101,7 +110,13 @@ DenoiseOptions adaptive_options(const std::string& shape_class, double sigma) {
 
 PresetChoice choose_preset(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   validate_mesh(V, F, "preset choice");
+  return detail::choose_preset_masked(V, F, nullptr);
+}
+
+PresetChoice detail::choose_preset_masked(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                                          const std::vector<char>* measured) {
   PresetChoice c;
+  const auto counts = [&](Eigen::Index f) { return !measured || (*measured)[static_cast<std::size_t>(f)]; };
   // Pre-smooth the normals with bilateral passes, then look at the dihedral angles of the
   // smoothed normals, weighted by edge length. CAD parts (and scans of them) have either a
   // clear set of strong creases or mostly flat regions; organic shapes have neither.
@@ -112,17 +127,22 @@ PresetChoice choose_preset(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   const Topology t = build_topology(F, V.rows());
   const Eigen::VectorXd len = edge_lengths(V, t);
   double total = 0, flat = 0, sharp = 0, raw_dev = 0;
+  Eigen::Index measured_faces = 0;
   for (Eigen::Index e = 0; e < t.num_edges(); ++e) {
-    if (!t.edge_is_interior[e]) continue;
+    if (!t.edge_is_interior[e] || !counts(t.edge_faces(e, 0)) || !counts(t.edge_faces(e, 1))) continue;
     const double a = std::acos(std::clamp(N.row(t.edge_faces(e, 0)).dot(N.row(t.edge_faces(e, 1))), -1.0, 1.0));
     total += len(e);
     if (a < kFlatAngleDeg * M_PI / 180) flat += len(e);
     if (a > kCreaseAngleDeg * M_PI / 180) sharp += len(e);
   }
-  for (Eigen::Index f = 0; f < F.rows(); ++f) raw_dev += std::acos(std::clamp(N.row(f).dot(N0.row(f)), -1.0, 1.0));
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    if (counts(f)) {
+      raw_dev += std::acos(std::clamp(N.row(f).dot(N0.row(f)), -1.0, 1.0));
+      ++measured_faces;
+    }
   c.sharp_fraction = total > 0 ? sharp / total : 0;
   c.flat_fraction = total > 0 ? flat / total : 0;
-  c.noise_level = F.rows() ? raw_dev / double(F.rows()) : 0;
+  c.noise_level = measured_faces ? raw_dev / double(measured_faces) : 0;
   const bool creases = c.sharp_fraction >= kCadCreaseFraction, flats = c.flat_fraction >= kCadFlatFraction;
   c.preset = (creases || flats) ? "cad" : "smooth";
   c.reason = "crease fraction " + fixed(c.sharp_fraction, 3) + (creases ? " >= " : " < ") +
@@ -134,7 +154,10 @@ PresetChoice choose_preset(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
 std::string ResolvedPreset::reason() const {
   const std::string s = strength != 1.0 ? ", strength " + fixed(strength, 2) : "";
   if (!automatic) return "requested" + s;
-  return "chosen automatically (" + noise.summary() + s + ": alpha " + fixed(options.normals.alpha, 2) +
+  const std::string sampled = sample_faces > 0 ? "measured on " + std::to_string(sample_faces) + " faces of " +
+                                                     std::to_string(sample_patches) + " patches; "
+                                               : "";
+  return "chosen automatically (" + sampled + noise.summary() + s + ": alpha " + fixed(options.normals.alpha, 2) +
          ", prefilter " + std::to_string(options.prefilter_iterations) + "; " + choice.reason + ")";
 }
 
@@ -160,14 +183,26 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
     r.options = preset_options("cad");
     return r;
   }
-  r.noise = estimate_noise(V, F);
+  // A large mesh is measured on the cores of patches spread over it: the same figures to the
+  // printed digits (tests/test_presets.cpp), for a fraction of the time (docs/performance.md).
+  const bool sampled = F.rows() > kSampleAboveFaces;
+  detail::PatchSample sample;
+  if (sampled) {
+    sample = detail::sample_patches(V, F, kSamplePatches, kSamplePatchFaces, kSampleMargin);
+    r.sample_patches = sample.patches;
+    r.sample_faces = sample.core_faces;
+  }
+  const Eigen::MatrixXd& SV = sampled ? sample.mesh.V : V;
+  const Eigen::MatrixXi& SF = sampled ? sample.mesh.F : F;
+  r.noise = detail::estimate_noise_masked(SV, SF, sampled ? &sample.core_vertex : nullptr);
   r.sigma = strength * r.noise.sigma_rms;
   // The shape is judged on the mesh the first normals come from, so that heavy noise does not
   // count as creases.
   const int prefilter = prefilter_for(r.sigma);
   TaubinOptions to;
   to.iterations = prefilter;
-  r.choice = choose_preset(prefilter > 0 ? taubin_smooth(V, F, to) : V, F);
+  r.choice = detail::choose_preset_masked(prefilter > 0 ? taubin_smooth(SV, SF, to) : SV, SF,
+                                          sampled ? &sample.core_face : nullptr);
   r.preset = r.choice.preset;
   r.options = adaptive_options(r.preset, r.sigma);
   return r;
@@ -195,6 +230,7 @@ VertexUpdateOptions inpaint_vertex_options() {
   o.omega2 = 0.0;
   o.omega3 = 0.1;
   o.max_iterations = 60;
+  o.tolerance = 1e-6;  // new vertices travel far, slowly: all 60 iterations
   return o;
 }
 

@@ -7,10 +7,12 @@
 
 #include "msmesh/errors.h"
 #include "msmesh/inpaint.h"
+#include "msmesh/noise.h"
 #include "msmesh/parameters.h"
 #include "msmesh/presets.h"
 #include "msmesh/segment.h"
 #include "msmesh/shapes.h"
+#include "msmesh/taubin.h"
 #include "test_helpers.h"
 
 using namespace msmesh;
@@ -162,4 +164,33 @@ TEST(Presets, AutoIsInvariantUnderScaleRotationAndTranslation) {
   EXPECT_EQ(a.preset, b.preset);
   EXPECT_NEAR(a.sharp_fraction, b.sharp_fraction, 1e-9);
   EXPECT_NEAR(a.flat_fraction, b.flat_fraction, 1e-9);
+}
+
+TEST(Presets, LargeMeshesAreMeasuredOnASampleWithTheSameFigures) {
+  // 491K faces (above the sampling size): the noise estimate and the shape figures of the
+  // patch sample agree with those of the whole mesh, and the reason says what was measured.
+  Mesh m = make_torus(640, 384);
+  NoiseOptions no;
+  no.sigma = 0.3;
+  no.seed = 3;
+  m.V = add_noise(m.V, m.F, no);
+  const ResolvedPreset r = resolve_preset("auto", m.V, m.F);
+  ASSERT_GT(r.sample_faces, 50000);
+  EXPECT_LE(r.sample_faces, 32 * 6000);  // 32 patches of 6000 faces
+  EXPECT_EQ(r.sample_patches, 32);
+  EXPECT_NE(r.reason().find("measured on " + std::to_string(r.sample_faces) + " faces of 32 patches"),
+            std::string::npos)
+      << r.reason();
+  const NoiseEstimate whole = estimate_noise(m.V, m.F);
+  EXPECT_NEAR(r.noise.sigma, whole.sigma, 0.03 * whole.sigma);
+  EXPECT_NEAR(r.noise.sigma_rms, whole.sigma_rms, 0.03 * whole.sigma_rms);
+  TaubinOptions to;
+  to.iterations = r.options.prefilter_iterations;
+  const PresetChoice c = choose_preset(taubin_smooth(m.V, m.F, to), m.F);
+  EXPECT_EQ(r.preset, c.preset);
+  EXPECT_NEAR(r.choice.flat_fraction, c.flat_fraction, 0.03);
+  EXPECT_NEAR(r.choice.sharp_fraction, c.sharp_fraction, 0.01);
+  // A small mesh is measured whole.
+  const Mesh part = make_shape("fandisk", 8);
+  EXPECT_EQ(resolve_preset("auto", part.V, part.F).sample_faces, 0);
 }

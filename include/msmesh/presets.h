@@ -62,6 +62,9 @@ struct ResolvedPreset {
   NoiseEstimate noise;     ///< the noise estimate (when automatic)
   double strength = 1.0;   ///< how much to remove: 1 the default, larger smooths more
   double sigma = 0;        ///< the noise level the rules used: strength × noise.sigma_rms (auto)
+  /// Large meshes (auto): the faces measured, the cores of sample_patches patches spread over
+  /// the mesh (0: the whole mesh was measured).
+  Eigen::Index sample_faces = 0, sample_patches = 0;
   DenoiseOptions options;  ///< the options
   /// Why: "chosen automatically: ..." (auto) or "requested".
   std::string reason() const;
