@@ -42,8 +42,9 @@ TEST(Solver, ConjugateGradientsMatchCholeskyInTheNormalFilter) {
       EXPECT_GT(it, 0);
       EXPECT_LT(it, 60);  // bounded: the N-step matrix is well conditioned at any size
     }
-    EXPECT_LT((a.normals - b.normals).cwiseAbs().maxCoeff(), 1e-6) << preset;
-    EXPECT_LT((a.v - b.v).cwiseAbs().maxCoeff(), 1e-6) << preset;
+    // At the default solver tolerance (1e-6 relative residual) within 1e-5 after 30 iterations.
+    EXPECT_LT((a.normals - b.normals).cwiseAbs().maxCoeff(), 1e-5) << preset;
+    EXPECT_LT((a.v - b.v).cwiseAbs().maxCoeff(), 1e-5) << preset;
   }
   // Auto factors small meshes (exact, and faster there).
   EXPECT_TRUE(filter_with(m, LinearSolver::Auto).n_solver_iterations.empty());
@@ -78,7 +79,7 @@ TEST(Solver, ConjugateGradientsMatchCholeskyInTheVertexUpdate) {
     const VertexUpdateResult b = update_vertices(m.V, m.F, N, {}, o);
     ASSERT_EQ(b.solver_iterations.size(), 30u);
     const double edge = 2.0 / 8;
-    EXPECT_LT((a.V - b.V).cwiseAbs().maxCoeff(), 1e-6 * edge) << preset;
+    EXPECT_LT((a.V - b.V).cwiseAbs().maxCoeff(), 1e-5 * edge) << preset;  // at the default solver tolerance
     EXPECT_EQ(a.fallback_projections, b.fallback_projections);
   }
 }

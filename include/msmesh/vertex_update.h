@@ -27,8 +27,8 @@ struct VertexUpdateOptions {
   double tolerance = 1e-3;
   /// Solver of the V-step (ω₁KᵀK + ω₂HᵀH + ω₃I) V = ...; Auto: Cholesky below 40K vertices, CG above.
   LinearSolver solver = LinearSolver::Auto;
-  /// Relative residual at which conjugate gradients stop (solver CG).
-  double solver_tolerance = 1e-8;
+  /// Relative residual at which conjugate gradients stop (solver CG); as NormalFilterOptions'.
+  double solver_tolerance = 1e-6;
   void validate() const;
 };
 
