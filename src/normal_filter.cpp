@@ -184,7 +184,7 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
     : o_(o),
       F_(mesh.faces()),
       topo_(mesh.topology()),
-      ops_(build_operators(mesh.positions(), mesh.faces(), mesh.topology())),
+      ops_(build_operators(mesh.positions(), mesh.faces(), mesh.topology(), /*matrices=*/o.record_energy)),
       nf_(mesh.num_faces()),
       ne_(mesh.num_edges()),
       face_alpha_(ones_or(weights.face_alpha, nf_, "face_alpha")),

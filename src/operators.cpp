@@ -79,10 +79,12 @@ SparseMatrix build_edge_gradient(const Topology& topo) {
                      });
 }
 
-Operators build_operators(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Topology& topo) {
+Operators build_operators(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Topology& topo, bool matrices) {
   Operators ops;
-  ops.G = build_face_gradient(topo);
-  ops.D = build_edge_gradient(topo);
+  if (matrices) {
+    ops.G = build_face_gradient(topo);
+    ops.D = build_edge_gradient(topo);
+  }
   ops.face_areas = face_areas(V, F);
   ops.edge_lengths = edge_lengths(V, topo);
   const Eigen::MatrixXd lines = corner_line_lengths(V, F);

@@ -40,7 +40,7 @@ namespace {
 // row): neighbours end up close in memory, so the gathers of the matrix–vector product hit
 // the cache. Scanned meshes often list their vertices in scan order, not surface order (the
 // Cone's faces span 5800 vertex indices on median); there this makes CG sweeps ~2× cheaper.
-std::vector<int> reverse_cuthill_mckee(const RowSparse& A) {
+std::vector<int> reverse_cuthill_mckee(const Eigen::Map<const RowSparse>& A) {
   const int n = static_cast<int>(A.rows());
   std::vector<int> degree(static_cast<size_t>(n));
   for (int i = 0; i < n; ++i) degree[static_cast<size_t>(i)] = A.outerIndexPtr()[i + 1] - A.outerIndexPtr()[i];
@@ -61,7 +61,7 @@ std::vector<int> reverse_cuthill_mckee(const RowSparse& A) {
       for (; head < level_end; ++head) {
         const int u = out[head];
         nbrs.clear();
-        for (RowSparse::InnerIterator it(A, u); it; ++it) {
+        for (Eigen::Map<const RowSparse>::InnerIterator it(A, u); it; ++it) {
           const int w = static_cast<int>(it.col());
           if (!mark[static_cast<size_t>(w)]) {
             mark[static_cast<size_t>(w)] = 1;
@@ -101,7 +101,17 @@ std::vector<int> reverse_cuthill_mckee(const RowSparse& A) {
 }  // namespace
 
 BlockPcg::BlockPcg(const Eigen::SparseMatrix<double>& A, bool reorder) {
-  const RowSparse A0(A);
+  // A is symmetric, so its compressed columns are its rows: read them in place rather than
+  // converting (a copy of A, the largest array of the vertex update).
+  Eigen::SparseMatrix<double> compressed;
+  const Eigen::SparseMatrix<double>* src = &A;
+  if (!A.isCompressed()) {
+    compressed = A;
+    compressed.makeCompressed();
+    src = &compressed;
+  }
+  const Eigen::Map<const RowSparse> A0(src->rows(), src->cols(), src->nonZeros(), src->outerIndexPtr(),
+                                       src->innerIndexPtr(), src->valuePtr());
   const Eigen::Index n = A0.rows();
   if (reorder) perm_ = reverse_cuthill_mckee(A0);
   auto old_row = [&](Eigen::Index i) { return perm_.empty() ? static_cast<int>(i) : perm_[static_cast<size_t>(i)]; };
@@ -117,7 +127,7 @@ BlockPcg::BlockPcg(const Eigen::SparseMatrix<double>& A, bool reorder) {
   std::vector<std::pair<int, double>> row;
   for (Eigen::Index i = 0; i < n; ++i) {
     row.clear();
-    for (RowSparse::InnerIterator it(A0, old_row(i)); it; ++it)
+    for (Eigen::Map<const RowSparse>::InnerIterator it(A0, old_row(i)); it; ++it)
       row.emplace_back(inverse[static_cast<size_t>(it.col())], it.value());
     std::sort(row.begin(), row.end());
     int k = outer[i];

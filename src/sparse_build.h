@@ -23,87 +23,127 @@ inline void insertion_sort(int* col, double* val, size_t m) {
     }
 }
 
+/// Sums the repeated columns of one row (m pairs at col/val) in place, sorted by column;
+/// returns the number of distinct columns. `n`: the matrix size (for the column map).
+inline size_t merge_row(int* col, double* val, size_t m, Eigen::Index n) {
+  if (m <= 16) {  // short rows: sort, then sum the repeats
+    insertion_sort(col, val, m);
+    size_t last = 0;
+    for (size_t a = 1; a < m; ++a) {
+      if (col[a] == col[last]) {
+        val[last] += val[a];
+      } else {
+        ++last;
+        col[last] = col[a];
+        val[last] = val[a];
+      }
+    }
+    return m == 0 ? 0 : last + 1;
+  }
+  // Long rows (the vertex update: ~70 entries, ~20 distinct columns): sum the repeats through a
+  // column → slot map in the order the row wrote them (deterministic), then sort the few
+  // distinct columns. A sort of all the pairs took 80 % of the assembly.
+  thread_local std::vector<int> slot;
+  if (slot.size() < static_cast<size_t>(n)) slot.assign(static_cast<size_t>(n), -1);
+  size_t u = 0;
+  for (size_t a = 0; a < m; ++a) {
+    const int c = col[a];
+    int& sl = slot[static_cast<size_t>(c)];
+    if (sl < 0) {
+      sl = static_cast<int>(u);
+      col[u] = c;
+      val[u] = val[a];
+      ++u;
+    } else {
+      val[static_cast<size_t>(sl)] += val[a];
+    }
+  }
+  for (size_t a = 0; a < u; ++a) slot[static_cast<size_t>(col[a])] = -1;
+  if (u <= 32) {
+    insertion_sort(col, val, u);
+  } else {  // a high-valence vertex: O(u log u) (the columns are distinct, so any sort gives the same)
+    thread_local std::vector<std::pair<int, double>> pairs;
+    pairs.resize(u);
+    for (size_t a = 0; a < u; ++a) pairs[a] = {col[a], val[a]};
+    std::sort(pairs.begin(), pairs.end());
+    for (size_t a = 0; a < u; ++a) {
+      col[a] = pairs[a].first;
+      val[a] = pairs[a].second;
+    }
+  }
+  return u;
+}
+
 /// n by n symmetric matrix from rows: `capacity(i)` bounds the entries of row i and
 /// `row(i, cols, vals)` writes them (any order, repeated columns allowed: they are summed)
 /// and returns their number. Because the matrix is symmetric, its rows are its columns and
 /// the result is returned in Eigen's default column-major storage.
+///
+/// Rows are written kBlockRows at a time into a scratch of their capacities, merged there and
+/// kept compacted, so the scratch stays small (the vertex update's rows have ~70 entries
+/// before merging and ~20 after: a scratch for all rows was the peak memory of a denoise).
 template <class Capacity, class Row>
 Eigen::SparseMatrix<double> symmetric_from_rows(Eigen::Index n, Capacity&& capacity, Row&& row) {
-  std::vector<Eigen::Index> cap(static_cast<size_t>(n) + 1, 0);
-  for (Eigen::Index i = 0; i < n; ++i) cap[static_cast<size_t>(i) + 1] = cap[static_cast<size_t>(i)] + capacity(i);
-  std::vector<int> col(static_cast<size_t>(cap.back()));
-  std::vector<double> val(static_cast<size_t>(cap.back()));
-  std::vector<int> count(static_cast<size_t>(n));
-  const Eigen::Index row_weight = std::max<Eigen::Index>(1, cap.back() / std::max<Eigen::Index>(1, 4 * n));
-  parallel_for(
-      n,
-      [&](Eigen::Index i) {
-        const size_t b = static_cast<size_t>(cap[static_cast<size_t>(i)]);
-        size_t m = static_cast<size_t>(row(i, col.data() + b, val.data() + b));
-        if (m <= 16) {  // short rows: sort, then sum the repeats
-          insertion_sort(col.data() + b, val.data() + b, m);
-          size_t last = b;
-          for (size_t a = b + 1; a < b + m; ++a) {
-            if (col[a] == col[last]) {
-              val[last] += val[a];
-            } else {
-              ++last;
-              col[last] = col[a];
-              val[last] = val[a];
-            }
-          }
-          m = m == 0 ? 0 : last - b + 1;
-        } else {
-          // Long rows (the vertex update: ~70 entries, ~20 distinct columns): sum the repeats
-          // through a column → slot map in the order the row wrote them (deterministic), then
-          // sort the few distinct columns. A sort of all the pairs took 80 % of the assembly.
-          thread_local std::vector<int> slot;
-          if (slot.size() < static_cast<size_t>(n)) slot.assign(static_cast<size_t>(n), -1);
-          size_t u = 0;
-          for (size_t a = 0; a < m; ++a) {
-            const int c = col[b + a];
-            int& s = slot[static_cast<size_t>(c)];
-            if (s < 0) {
-              s = static_cast<int>(u);
-              col[b + u] = c;
-              val[b + u] = val[b + a];
-              ++u;
-            } else {
-              val[b + static_cast<size_t>(s)] += val[b + a];
-            }
-          }
-          for (size_t a = 0; a < u; ++a) slot[static_cast<size_t>(col[b + a])] = -1;
-          if (u <= 32) {
-            insertion_sort(col.data() + b, val.data() + b, u);
-          } else {  // a high-valence vertex: O(u log u) (the columns are distinct, so any sort gives the same)
-            thread_local std::vector<std::pair<int, double>> pairs;
-            pairs.resize(u);
-            for (size_t a = 0; a < u; ++a) pairs[a] = {col[b + a], val[b + a]};
-            std::sort(pairs.begin(), pairs.end());
-            for (size_t a = 0; a < u; ++a) {
-              col[b + a] = pairs[a].first;
-              val[b + a] = pairs[a].second;
-            }
-          }
-          m = u;
-        }
-        count[static_cast<size_t>(i)] = static_cast<int>(m);
-      },
-      row_weight);
-  Eigen::SparseMatrix<double> A(n, n);
+  constexpr Eigen::Index kBlockRows = Eigen::Index(1) << 16;
+  struct Block {
+    std::vector<int> col, count;
+    std::vector<double> val;
+  };
+  std::vector<Block> blocks;
+  std::vector<Eigen::Index> cap;
+  std::vector<int> col;
+  std::vector<double> val;
   Eigen::Index nnz = 0;
-  for (Eigen::Index i = 0; i < n; ++i) nnz += count[static_cast<size_t>(i)];
+  for (Eigen::Index r0 = 0; r0 < n; r0 += kBlockRows) {
+    const Eigen::Index rows = std::min(kBlockRows, n - r0);
+    cap.assign(static_cast<size_t>(rows) + 1, 0);
+    for (Eigen::Index i = 0; i < rows; ++i)
+      cap[static_cast<size_t>(i) + 1] = cap[static_cast<size_t>(i)] + capacity(r0 + i);
+    col.resize(static_cast<size_t>(cap.back()));
+    val.resize(static_cast<size_t>(cap.back()));
+    Block& bl = blocks.emplace_back();
+    bl.count.resize(static_cast<size_t>(rows));
+    const Eigen::Index row_weight = std::max<Eigen::Index>(1, cap.back() / std::max<Eigen::Index>(1, 4 * rows));
+    parallel_for(
+        rows,
+        [&](Eigen::Index i) {
+          const size_t b = static_cast<size_t>(cap[static_cast<size_t>(i)]);
+          const size_t m = static_cast<size_t>(row(r0 + i, col.data() + b, val.data() + b));
+          bl.count[static_cast<size_t>(i)] = static_cast<int>(merge_row(col.data() + b, val.data() + b, m, n));
+        },
+        row_weight);
+    size_t total = 0;
+    for (const int c : bl.count) total += static_cast<size_t>(c);
+    bl.col.resize(total);
+    bl.val.resize(total);
+    size_t k = 0;
+    for (Eigen::Index i = 0; i < rows; ++i) {
+      const size_t b = static_cast<size_t>(cap[static_cast<size_t>(i)]);
+      const size_t c = static_cast<size_t>(bl.count[static_cast<size_t>(i)]);
+      std::copy_n(col.data() + b, c, bl.col.data() + k);
+      std::copy_n(val.data() + b, c, bl.val.data() + k);
+      k += c;
+    }
+    nnz += static_cast<Eigen::Index>(total);
+  }
+  std::vector<int>().swap(col);
+  std::vector<double>().swap(val);
+  Eigen::SparseMatrix<double> A(n, n);
   A.resizeNonZeros(nnz);
   int* outer = A.outerIndexPtr();
   outer[0] = 0;
-  for (Eigen::Index i = 0; i < n; ++i) outer[i + 1] = outer[i] + count[static_cast<size_t>(i)];
-  parallel_for(n, [&](Eigen::Index i) {
-    const size_t b = static_cast<size_t>(cap[static_cast<size_t>(i)]);
-    for (int k = 0; k < count[static_cast<size_t>(i)]; ++k) {
-      A.innerIndexPtr()[outer[i] + k] = col[b + static_cast<size_t>(k)];
-      A.valuePtr()[outer[i] + k] = val[b + static_cast<size_t>(k)];
+  Eigen::Index i = 0, at = 0;
+  for (Block& bl : blocks) {
+    for (const int c : bl.count) {
+      outer[i + 1] = outer[i] + c;
+      ++i;
     }
-  });
+    std::copy(bl.col.begin(), bl.col.end(), A.innerIndexPtr() + at);
+    std::copy(bl.val.begin(), bl.val.end(), A.valuePtr() + at);
+    at += static_cast<Eigen::Index>(bl.col.size());
+    std::vector<int>().swap(bl.col);
+    std::vector<double>().swap(bl.val);
+  }
   return A;
 }
 

@@ -97,3 +97,15 @@ TEST(Operators, BoundaryAndNonManifoldEdgesHaveEmptyGradientRows) {
   }
   EXPECT_EQ(ops.G.nonZeros(), 0);  // every edge of the fin is boundary or non-manifold
 }
+
+TEST(Operators, WeightsOnlyLeaveTheMatricesEmpty) {
+  const Mesh m = make_cube(3);
+  const Topology t = build_topology(m.F, m.V.rows());
+  const Operators all = build_operators(m.V, m.F, t), weights = build_operators(m.V, m.F, t, false);
+  EXPECT_EQ(weights.G.nonZeros(), 0);
+  EXPECT_EQ(weights.D.nonZeros(), 0);
+  EXPECT_GT(all.G.nonZeros(), 0);
+  EXPECT_EQ(weights.face_areas, all.face_areas);
+  EXPECT_EQ(weights.edge_lengths, all.edge_lengths);
+  EXPECT_EQ(weights.line_lengths, all.line_lengths);
+}

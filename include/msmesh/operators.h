@@ -26,8 +26,11 @@ struct Operators {
   Eigen::VectorXd line_lengths;  ///< 3#F, L_W = diag(line_lengths)
 };
 
-/// Builds G, D and the weights for V (#V by 3), F (#F by 3) and its topology.
-Operators build_operators(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Topology& topo);
+/// Builds G, D and the weights for V (#V by 3), F (#F by 3) and its topology. With
+/// `matrices` false, only the weights (G and D left empty: the normal filter assembles its
+/// systems from the topology and needs them only to record the energy).
+Operators build_operators(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Topology& topo,
+                          bool matrices = true);
 
 /// Builds only G (#E by #F), which needs no geometry.
 SparseMatrix build_face_gradient(const Topology& topo);
