@@ -121,8 +121,9 @@ def count_faces(path):
         return sum(1 for line in f if line.startswith(b"f "))
 
 
-def fit_exponent(points, lo=9e4):
-    pts = [(math.log(x), math.log(y)) for x, y in points if x >= lo and y > 0]
+def fit_exponent(points):
+    """Least-squares slope of log(seconds) against log(faces)."""
+    pts = [(math.log(x), math.log(y)) for x, y in points if y > 0]
     if len(pts) < 2:
         return float("nan")
     n = len(pts)
@@ -159,7 +160,13 @@ def main():
     ap.add_argument("--tmp", default=None, help="folder for the temporary meshes (default: the system's)")
     ap.add_argument("--out", default=os.path.join(ROOT, "docs"), help="scaling_peer.csv and images/ go here")
     ap.add_argument("--json", default="", help="also write every run here")
+    ap.add_argument("--from-json", default="", help="measure nothing: remake the table, CSV and plot of a --json")
     args = ap.parse_args()
+    if args.from_json:
+        with open(args.from_json) as f:
+            d = json.load(f)
+        report(d["meshes"], d["exes"], d["probe_before"], d["probe_after"], args.out, "")
+        return 0
     exes = [os.path.abspath(e) for e in (args.exe or [os.path.join(ROOT, "build", "msmesh")])]
     for exe in exes:
         if not os.access(exe, os.X_OK):
@@ -220,7 +227,8 @@ def main():
                 line = ", ".join(f"msmesh{'' if len(exes) == 1 else j + 1} {runs[j][-1]['seconds']:.2f} s"
                                  for j in range(len(exes)))
                 print(f"  round {r + 1}: {line}, open3d {w:.2f} s", file=sys.stderr)
-            results.append({"kind": kind, "label": label, "faces": faces, "runs": runs, "peer": peer})
+            results.append({"kind": kind, "label": label, "faces": faces, "size": what if kind == "size" else None,
+                            "runs": runs, "peer": peer})
             if kind == "size":
                 os.remove(path)  # the 5M-face OBJ is 230 MB
     except RunError as e:
@@ -229,8 +237,14 @@ def main():
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     after = probe(args.probe)
-    results.sort(key=lambda res: res["faces"])
+    report(results, exes, before, after, args.out, args.json)
+    return 0
 
+
+def report(results, exes, before, after, out, json_path):
+    """Prints the table, writes OUT/scaling_peer.csv, the plot and (json_path) every run."""
+    results.sort(key=lambda res: res["faces"])
+    rounds = sorted({len(res["peer"]) for res in results})
     rows = []
     for res in results:
         peer = res["peer"]
@@ -260,8 +274,9 @@ def main():
     print("\n### msmesh denoise (defaults) against Open3D Taubin x10, whole processes\n")
     many = len(exes) > 1
     print(f"| mesh | faces |{' program |' if many else ''} msmesh s | Open3D s | ratio msmesh / Open3D | "
-          "msmesh peak MB (KB/face) | Open3D peak MB (KB/face) | Open3D import / read / smooth / write s |")
-    print(f"|---|---:|{'---|' if many else ''}---:|---:|---:|---:|---:|---:|")
+          "CPU s msmesh / Open3D | msmesh peak MB (KB/face) | Open3D peak MB (KB/face) | "
+          "Open3D import / read / smooth / write s |")
+    print(f"|---|---:|{'---|' if many else ''}---:|---:|---:|---:|---:|---:|---:|")
     for res in results:
         for j, row in enumerate(res["rows"]):
             ms = [x["seconds"] for x in res["runs"][j]]
@@ -270,39 +285,41 @@ def main():
             print(f"| {res['label']} | {res['faces']:,} |{f' {j + 1} |' if many else ''} {spread(ms, '{:.2f}')} | "
                   f"{spread(o3, '{:.2f}')} | **{statistics.median(ratio):.2f}** "
                   f"({min(ratio):.2f}–{max(ratio):.2f}) | "
+                  f"{row['msmesh_cpu_s_median']:.2f} / {row['open3d_cpu_s_median']:.2f} | "
                   f"{row['msmesh_peak_mb']:.0f} ({row['msmesh_kb_per_face']:.2f}) | "
                   f"{row['open3d_peak_mb']:.0f} ({row['open3d_kb_per_face']:.2f}) | "
                   f"{row['open3d_import_s_median']:.2f} / {row['open3d_read_s_median']:.2f} / "
                   f"{row['open3d_smooth_s_median']:.2f} / {row['open3d_write_s_median']:.2f} |")
-    print(f"\nmedian (min–max) of {args.rounds} alternating rounds; ratio: of the two runs of the same round; "
-          "KB/face: peak MB x 1000 / faces")
+    print(f"\nmedian (min–max) of {'/'.join(map(str, rounds))} alternating rounds; ratio: of the two runs of the same round; "
+          "CPU s: user + system time of the process, median; KB/face: peak MB x 1000 / faces")
     if many:
         print("programs: " + ", ".join(f"{j + 1} = {e}" for j, e in enumerate(exes)))
-    procedural = [res for res in results if res["kind"] == "size"]
+    # From the mesh made for --sizes 1e5 up (the sphere nearest to 100K faces has 81,920).
+    procedural = [res for res in results if res["kind"] == "size" and res["size"] >= 1e5]
     for j in range(len(exes)):
         ms_pts = [(res["faces"], res["rows"][j]["msmesh_s_median"]) for res in procedural]
         peer_pts = [(res["faces"], res["rows"][j]["open3d_s_median"]) for res in procedural]
         name = f"msmesh {j + 1}" if many else "msmesh"
-        print(f"growth exponent of {name}'s median time (procedural meshes, faces >= 1e5): "
+        which = ", ".join(f"{res['faces']:,}" for res in procedural)
+        print(f"growth exponent of {name}'s median time (procedural meshes of {which} faces): "
               f"{fit_exponent(ms_pts):.3f}" + ("" if j else f"; Open3D's: {fit_exponent(peer_pts):.3f}"))
     for name, p in (("before", before), ("after", after)):
         if p:
             print(probe_line(name, p))
 
-    os.makedirs(args.out, exist_ok=True)
+    os.makedirs(out, exist_ok=True)
     keys = []
     for r in rows:
         keys += [k for k in r if k not in keys]
-    with open(os.path.join(args.out, "scaling_peer.csv"), "w", newline="") as f:
+    with open(os.path.join(out, "scaling_peer.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys)
         w.writeheader()
         w.writerows([{k: round(v, 5) if isinstance(v, float) else v for k, v in r.items()} for r in rows])
-    if args.json:
-        with open(args.json, "w") as f:
+    if json_path:
+        with open(json_path, "w") as f:
             json.dump({"probe_before": before, "probe_after": after, "exes": exes,
                        "meshes": [{k: v for k, v in res.items() if k != "rows"} for res in results]}, f, indent=1)
-    plot(results, exes, args.out)
-    return 0
+    plot(results, exes, out)
 
 
 def plot(results, exes, out):

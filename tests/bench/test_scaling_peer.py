@@ -104,6 +104,12 @@ def test_peer(msmesh, tmp):
         check(float(row["open3d_peak_mb"]) > peak, str(row))
         check(o3 >= float(row["open3d_import_s_median"]) + float(row["open3d_smooth_s_median"]), str(row))
     check(not [n for n in os.listdir(tmp) if n.startswith("msmesh_peer_")], "peer.py left its temporary folder")
+    # --from-json remakes the same CSV from the runs, measuring nothing.
+    again = os.path.join(tmp, "again")
+    r = subprocess.run([PYTHON, PEER, "--from-json", runs, "--out", again], capture_output=True, text=True)
+    check(r.returncode == 0, f"--from-json: exit {r.returncode}\n{r.stderr}")
+    with open(os.path.join(out, "scaling_peer.csv")) as f, open(os.path.join(again, "scaling_peer.csv")) as g:
+        check(f.read() == g.read(), "--from-json wrote another CSV than the run")
     r = subprocess.run([PYTHON, PEER, "--sizes", "1e3", "--rounds", "1", "--real", "", "--out", out,
                         "--exe", os.path.join(tmp, "no_msmesh")], capture_output=True, text=True)
     check(r.returncode == 1 and "no_msmesh" in r.stderr, f"a missing --exe: exit {r.returncode}, {r.stderr}")
