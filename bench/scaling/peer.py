@@ -132,9 +132,12 @@ def fit_exponent(points):
     return sum((x - mx) * (y - my) for x, y in pts) / sum((x - mx) ** 2 for x, _ in pts)
 
 
-def spread(values, fmt):
+def spread(values, fmt, bold=False):
+    """'median (min–max)', the median in bold with `bold`; the value alone for one run."""
     v = sorted(values)
-    return f"{fmt.format(statistics.median(v))} ({fmt.format(v[0])}–{fmt.format(v[-1])})"
+    med = fmt.format(statistics.median(v))
+    med = f"**{med}**" if bold else med
+    return med if len(v) == 1 else f"{med} ({fmt.format(v[0])}–{fmt.format(v[-1])})"
 
 
 def open3d_missing(python):
@@ -283,8 +286,7 @@ def report(results, exes, before, after, out, json_path):
             o3 = [x["seconds"] for x in res["peer"]]
             ratio = [a / b for a, b in zip(ms, o3)]
             print(f"| {res['label']} | {res['faces']:,} |{f' {j + 1} |' if many else ''} {spread(ms, '{:.2f}')} | "
-                  f"{spread(o3, '{:.2f}')} | **{statistics.median(ratio):.2f}** "
-                  f"({min(ratio):.2f}–{max(ratio):.2f}) | "
+                  f"{spread(o3, '{:.2f}')} | {spread(ratio, '{:.2f}', bold=True)} | "
                   f"{row['msmesh_cpu_s_median']:.2f} / {row['open3d_cpu_s_median']:.2f} | "
                   f"{row['msmesh_peak_mb']:.0f} ({row['msmesh_kb_per_face']:.2f}) | "
                   f"{row['open3d_peak_mb']:.0f} ({row['open3d_kb_per_face']:.2f}) | "
