@@ -16,14 +16,15 @@ rounds (A B A B ...):
     B  /usr/bin/python3 bench/scaling/open3d_taubin.py noisy.obj out_o3d.obj
 
 each a whole process (interpreter start and `import open3d` count for B), timed by wall clock,
-with its peak resident memory and CPU time (os.wait4). Several --exe run in turn in every
+with its peak resident memory and CPU time (user + system, os.wait4). Several --exe run in turn in every
 round (A1 A2 B), an A/B comparison of builds against the same peer runs. Printed: a markdown
 table per mesh (median and min-max of each program's seconds and of the ratio msmesh / Open3D
 of the runs of the same round; peak memory; KB per face = peak MB * 1000 / faces, with MB as
 in docs/scaling.csv, 2^20 bytes), Open3D's own stage times, the growth exponent of msmesh's
 median time from 100K faces up (least squares on log-log), and the machine probe
 (build/bench/msmesh_probe) before and after. Written: OUT/scaling_peer.csv and, with
-python3-matplotlib, OUT/images/scaling_peer.png.
+python3-matplotlib, OUT/images/scaling_peer.png; --json FILE also keeps every run, and
+--from-json FILE remakes the table, CSV and plot from it without measuring.
 
 Exit status: 0 done, 1 a run failed (its command and message are printed), 77 open3d is not
 importable by --python (nothing measured; Debian: apt-get install python3-open3d).
