@@ -39,6 +39,10 @@ constexpr int kPrefilterMax = 5;
 //   the fairness term (v ≈ 1 everywhere on organic shapes) flattens curvature the input still has,
 //   so it is weak at low noise and reaches its full weight at σ 0.4.
 constexpr double kFairnessFrom = 0.1, kFairnessSpan = 0.3, kFairnessMinShare = 0.1;
+//   ω₃ (both classes) = the class's ω₃ × clamp((kClosenessSigma / σ)², 1, kClosenessMaxGain): the
+//   closeness to the input is a Gaussian-likelihood weight, ∝ 1/σ², so below σ 0.13 it grows and
+//   the vertex update keeps the detail a nearly clean input still has (up to 3×, reached at σ 0.075).
+constexpr double kClosenessSigma = 0.13, kClosenessMaxGain = 3.0;
 
 // Meshes above kSampleAboveFaces faces are measured on kSamplePatches patches of
 // kSamplePatchFaces faces, away from the cuts by kSampleMargin rings (about as far as the
@@ -106,6 +110,8 @@ DenoiseOptions adaptive_options(const std::string& shape_class, double sigma) {
   o.prefilter_iterations = prefilter_for(sigma);
   if (shape_class == "smooth")
     o.vertices.omega2 *= std::clamp((sigma - kFairnessFrom) / kFairnessSpan, kFairnessMinShare, 1.0);
+  const double closeness = sigma > 0 ? kClosenessSigma / sigma : 1e300;
+  o.vertices.omega3 *= std::clamp(closeness * closeness, 1.0, kClosenessMaxGain);
   return o;
 }
 

@@ -109,6 +109,7 @@ TEST(Presets, AdaptiveOptionsFollowTheNoise) {
   // Less fidelity and more pre-filtering as the noise grows; within the documented limits.
   double last_alpha = 1e300;
   int last_prefilter = -1;
+  double last_closeness[2] = {1e300, 1e300};
   for (const double sigma : {0.0, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 5.0}) {
     for (const char* cls : {"cad", "smooth"}) {
       const DenoiseOptions o = adaptive_options(cls, sigma);
@@ -117,13 +118,22 @@ TEST(Presets, AdaptiveOptionsFollowTheNoise) {
       EXPECT_LE(o.normals.alpha, 5.0);
       EXPECT_GE(o.prefilter_iterations, 0);
       EXPECT_LE(o.prefilter_iterations, 5);
-      // Everything but α, the pre-filter and (smooth) the fairness weight is the class's preset.
+      // Everything but α, the pre-filter, the closeness weight and (smooth) the fairness weight is
+      // the class's preset.
       DenoiseOptions p = preset_options(cls);
       p.normals.alpha = o.normals.alpha;
       p.prefilter_iterations = o.prefilter_iterations;
       EXPECT_LE(o.vertices.omega2, p.vertices.omega2);
       EXPECT_GE(o.vertices.omega2, 0.1 * p.vertices.omega2);
       p.vertices.omega2 = o.vertices.omega2;
+      // ω₃ grows as 1/σ² below σ 0.13, up to 3× the class's: never less than the class's, never
+      // rising with the noise.
+      EXPECT_GE(o.vertices.omega3, p.vertices.omega3) << cls << " " << sigma;
+      EXPECT_LE(o.vertices.omega3, 3 * p.vertices.omega3 * (1 + 1e-12)) << cls << " " << sigma;
+      double& last = last_closeness[std::string(cls) == "cad" ? 0 : 1];
+      EXPECT_LE(o.vertices.omega3, last) << cls << " " << sigma;
+      last = o.vertices.omega3;
+      p.vertices.omega3 = o.vertices.omega3;
       expect_same_parameters(denoise_parameters(), o, p, std::string(cls) + " at " + std::to_string(sigma));
     }
     const DenoiseOptions o = adaptive_options("cad", sigma);
@@ -135,6 +145,14 @@ TEST(Presets, AdaptiveOptionsFollowTheNoise) {
   EXPECT_EQ(adaptive_options("cad", 0.05).prefilter_iterations, 0);  // low noise: the input's own normals
   EXPECT_LT(adaptive_options("smooth", 0.1).vertices.omega2, adaptive_options("smooth", 0.5).vertices.omega2);
   EXPECT_EQ(adaptive_options("cad", 0.1).vertices.omega2, preset_options("cad").vertices.omega2);
+  for (const char* cls : {"cad", "smooth"}) {
+    const double omega3 = preset_options(cls).vertices.omega3;
+    EXPECT_DOUBLE_EQ(adaptive_options(cls, 0.0).vertices.omega3, 3 * omega3) << cls;       // clean: the most closeness
+    EXPECT_DOUBLE_EQ(adaptive_options(cls, 0.05).vertices.omega3, 3 * omega3) << cls;      // capped below σ 0.075
+    EXPECT_NEAR(adaptive_options(cls, 0.1).vertices.omega3, 1.69 * omega3, 1e-12) << cls;  // (0.13 / 0.1)²
+    EXPECT_DOUBLE_EQ(adaptive_options(cls, 0.13).vertices.omega3, omega3) << cls;
+    EXPECT_DOUBLE_EQ(adaptive_options(cls, 0.5).vertices.omega3, omega3) << cls;  // the class's from σ 0.13 up
+  }
   EXPECT_GT(adaptive_options("cad", 0.6).prefilter_iterations, 0);
   EXPECT_THROW(adaptive_options("organic", 0.3), InvalidInput);
   EXPECT_THROW(adaptive_options("cad", -1), InvalidInput);
