@@ -204,6 +204,15 @@ class PlyBodyReader {
 
   void at(const PlyElement& e, unsigned long long item) { element_ = &e, item_ = item; }
 
+  /// The next `n` bytes of a binary body as they are, or nullptr (nothing consumed) when fewer remain.
+  const char* take(std::size_t n) {
+    if (data_.size() - pos_ < n) return nullptr;
+    pos_ += n;
+    return data_.data() + pos_ - n;
+  }
+  /// Whether binary values can be taken as they are (a little-endian file on a little-endian host).
+  bool native() const { return format_ == PlyHeader::BinaryLittleEndian && little_host_; }
+
   [[noreturn]] void fail(const std::string& what) const {
     std::string where = "PLY " + element_->name + " " + std::to_string(item_);
     if (format_ == PlyHeader::Ascii) where += " (line " + std::to_string(line_) + ")";
@@ -405,43 +414,110 @@ void read_ply(const std::string& path, std::string_view data, Soup& soup) {
     double value[3] = {0, 0, 0}, uv[2] = {0, 0}, normal[3] = {0, 0, 0};
     int rgb[4] = {0, 0, 0, 255};
     std::vector<double> corner_uv;
+    // Binary little-endian vertices on a little-endian host: records of fixed size, decoded
+    // from their bytes by the offset and type of each property (the same values as the
+    // generic loop below, which reads the records it cannot take whole, with its errors).
+    struct Slot {
+      std::size_t offset;
+      const PlyType* type;
+      double* target;  // x, y, z, uv, normal, or nullptr
+      int rgb = -1;    // colour channel 0..3, or -1
+      int extra = -1;  // extra vertex property, or -1
+    };
+    std::vector<Slot> slots;
+    std::size_t record = 0;
+    bool fixed = vertex && in.native();
+    for (std::size_t p = 0; p < e.properties.size() && fixed; ++p) {
+      const PlyProperty& prop = e.properties[p];
+      const int pi = static_cast<int>(p);
+      fixed = !prop.is_list;
+      Slot slot{record, &prop.item, nullptr};
+      double* const targets[] = {value, value + 1, value + 2, uv, uv + 1, normal, normal + 1, normal + 2};
+      const int roles[] = {x, y, z, iu, iv, nx, nx >= 0 ? ny : -1, nx >= 0 ? nz : -1};
+      for (int r = 0; r < 8; ++r)
+        if (pi == roles[r]) slot.target = targets[r];
+      for (int c = 0; c < 3; ++c)
+        if (pi == col[c]) slot.rgb = c;
+      if (pi == alpha) slot.rgb = 3;
+      slot.extra = extra_slot[p];
+      slots.push_back(slot);
+      record += static_cast<std::size_t>(prop.size);
+    }
+    auto decode = [](const char* b, const PlyType& t) -> double {
+      switch (t.bytes) {
+        case 1:
+          return t.lo < 0 ? static_cast<double>(static_cast<signed char>(*b)) : static_cast<unsigned char>(*b);
+        case 2: {
+          std::uint16_t u;
+          std::memcpy(&u, b, 2);
+          return t.lo < 0 ? static_cast<double>(static_cast<std::int16_t>(u)) : u;
+        }
+        case 4: {
+          if (t.is_float) {
+            float f;
+            std::memcpy(&f, b, 4);
+            return f;
+          }
+          std::uint32_t u;
+          std::memcpy(&u, b, 4);
+          return t.lo < 0 ? static_cast<double>(static_cast<std::int32_t>(u)) : u;
+        }
+        default: {
+          double d;
+          std::memcpy(&d, b, 8);
+          return d;
+        }
+      }
+    };
     for (unsigned long long j = 0; j < e.count; ++j) {
       in.at(e, j);
-      for (std::size_t p = 0; p < e.properties.size(); ++p) {
-        const PlyProperty& prop = e.properties[p];
-        const int pi = static_cast<int>(p);
-        if (prop.is_list) {
-          const std::size_t n = in.list_count(prop);
-          if (pi == idx) {
-            // A negative index wraps to a huge one here; soup_to_mesh reports it signed.
-            for (std::size_t k = 0; k < n; ++k)
-              soup.flat.corners.push_back(static_cast<std::size_t>(in.integer(prop.item, prop.name)));
-            soup.flat.close();
-          } else if (pi == tex) {
-            corner_uv.resize(n);
-            for (std::size_t k = 0; k < n; ++k) corner_uv[k] = in.real(prop.item, prop.name);
-          } else {
-            for (std::size_t k = 0; k < n; ++k) in.real(prop.item, prop.name);
+      if (const char* b = fixed ? in.take(record) : nullptr) {
+        for (const Slot& slot : slots) {
+          const double v = decode(b + slot.offset, *slot.type);
+          if (slot.rgb >= 0) {
+            rgb[slot.rgb] = static_cast<int>(v);
+            continue;
           }
-          continue;
+          if (slot.extra >= 0) extra_values[static_cast<std::size_t>(slot.extra)].push_back(v);
+          if (slot.target) *slot.target = v;
         }
-        if (pi == col[0] || pi == col[1] || pi == col[2] || pi == alpha) {
-          rgb[pi == col[0]   ? 0
-              : pi == col[1] ? 1
-              : pi == col[2] ? 2
-                             : 3] = static_cast<int>(in.integer(prop.item, prop.name));
-          continue;
+      } else {
+        for (std::size_t p = 0; p < e.properties.size(); ++p) {
+          const PlyProperty& prop = e.properties[p];
+          const int pi = static_cast<int>(p);
+          if (prop.is_list) {
+            const std::size_t n = in.list_count(prop);
+            if (pi == idx) {
+              // A negative index wraps to a huge one here; soup_to_mesh reports it signed.
+              for (std::size_t k = 0; k < n; ++k)
+                soup.flat.corners.push_back(static_cast<std::size_t>(in.integer(prop.item, prop.name)));
+              soup.flat.close();
+            } else if (pi == tex) {
+              corner_uv.resize(n);
+              for (std::size_t k = 0; k < n; ++k) corner_uv[k] = in.real(prop.item, prop.name);
+            } else {
+              for (std::size_t k = 0; k < n; ++k) in.real(prop.item, prop.name);
+            }
+            continue;
+          }
+          if (pi == col[0] || pi == col[1] || pi == col[2] || pi == alpha) {
+            rgb[pi == col[0]   ? 0
+                : pi == col[1] ? 1
+                : pi == col[2] ? 2
+                               : 3] = static_cast<int>(in.integer(prop.item, prop.name));
+            continue;
+          }
+          const double v = in.real(prop.item, prop.name);
+          if (vertex && extra_slot[p] >= 0) extra_values[static_cast<std::size_t>(extra_slot[p])].push_back(v);
+          if (pi == x) value[0] = v;
+          if (pi == y) value[1] = v;
+          if (pi == z) value[2] = v;
+          if (pi == iu) uv[0] = v;
+          if (pi == iv) uv[1] = v;
+          if (pi == nx) normal[0] = v;
+          if (pi == ny) normal[1] = v;
+          if (pi == nz) normal[2] = v;
         }
-        const double v = in.real(prop.item, prop.name);
-        if (vertex && extra_slot[p] >= 0) extra_values[static_cast<std::size_t>(extra_slot[p])].push_back(v);
-        if (pi == x) value[0] = v;
-        if (pi == y) value[1] = v;
-        if (pi == z) value[2] = v;
-        if (pi == iu) uv[0] = v;
-        if (pi == iv) uv[1] = v;
-        if (pi == nx) normal[0] = v;
-        if (pi == ny) normal[1] = v;
-        if (pi == nz) normal[2] = v;
       }
       if (face) {
         if (col[0] >= 0) soup.face_rgba.push_back({rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0, rgb[3] / 255.0});
