@@ -3,12 +3,13 @@
 // (read_obj.cpp, read_off.cpp, read_ply.cpp, read_stl.cpp); read_mesh.cpp dispatches to them
 // by format and turns the soup into a Mesh.
 //
-// OBJ and PLY are parsed by our own code through read_text.h's tokenizer and strict number
-// parsers. OFF and STL go through CGAL's readers, which trust their input more than a
-// command-line tool can, so each is checked before CGAL sees it (found by reading CGAL 5.5's
-// readers and by fuzzing them under AddressSanitizer); what each reader guards against is
-// listed at the top of its file. read_off.cpp and read_stl.cpp are the only translation units
-// that include CGAL's I/O headers. The whole file is read into memory once.
+// OBJ, PLY and binary STL are parsed by our own code (read_text.h's tokenizer and strict
+// number parsers for text; one pass, no allocation per line or per polygon: their polygons go
+// to Soup::flat). OFF and ascii STL go through CGAL's readers, which trust their input more
+// than a command-line tool can, so each is checked before CGAL sees it (found by reading CGAL
+// 5.5's readers and by fuzzing them under AddressSanitizer); what each reader guards against
+// is listed at the top of its file. read_off.cpp and read_stl.cpp are the only translation
+// units that include CGAL's I/O headers. The whole file is read into memory once.
 #pragma once
 #include <CGAL/IO/Color.h>
 #include <CGAL/Simple_cartesian.h>
