@@ -3,12 +3,13 @@
 // (read_obj.cpp, read_off.cpp, read_ply.cpp, read_stl.cpp); read_mesh.cpp dispatches to them
 // by format and turns the soup into a Mesh.
 //
-// OBJ and PLY are parsed by our own code through read_text.h's tokenizer and strict number
-// parsers. OFF and STL go through CGAL's readers, which trust their input more than a
-// command-line tool can, so each is checked before CGAL sees it (found by reading CGAL 5.5's
-// readers and by fuzzing them under AddressSanitizer); what each reader guards against is
-// listed at the top of its file. read_off.cpp and read_stl.cpp are the only translation units
-// that include CGAL's I/O headers. The whole file is read into memory once.
+// OBJ, PLY and binary STL are parsed by our own code (read_text.h's tokenizer and strict
+// number parsers for text; one pass, no allocation per line or per polygon: their polygons go
+// to Soup::flat). OFF and ascii STL go through CGAL's readers, which trust their input more
+// than a command-line tool can, so each is checked before CGAL sees it (found by reading CGAL
+// 5.5's readers and by fuzzing them under AddressSanitizer); what each reader guards against
+// is listed at the top of its file. read_off.cpp and read_stl.cpp are the only translation
+// units that include CGAL's I/O headers. The whole file is read into memory once.
 #pragma once
 #include <CGAL/IO/Color.h>
 #include <CGAL/Simple_cartesian.h>
@@ -89,9 +90,39 @@ class Polygon {
   std::vector<std::size_t> heap_;
 };
 
+/// Polygons stored flat: the corners of all polygons in order, and where each one starts
+/// (8 bytes per corner and 8 per polygon, against sizeof(Polygon) = 64 and no allocation per
+/// polygon). The readers that fill the soup themselves (OBJ, PLY, binary STL) use it.
+struct FlatPolygons {
+  std::vector<std::size_t> corners;
+  std::vector<std::size_t> start = {0};  ///< polygon p: corners[start[p]] .. corners[start[p + 1] - 1]
+
+  std::size_t size() const { return start.size() - 1; }
+  std::size_t size_of(std::size_t p) const { return start[p + 1] - start[p]; }
+  const std::size_t* corners_of(std::size_t p) const { return corners.data() + start[p]; }
+  /// Ends the polygon whose corners were appended since the last one.
+  void close() { start.push_back(corners.size()); }
+};
+
+/// One polygon of a soup, in either storage.
+struct PolygonRef {
+  const std::size_t* corners;
+  std::size_t size;
+  const std::size_t* begin() const { return corners; }
+  const std::size_t* end() const { return corners + size; }
+};
+
 struct Soup {
   std::vector<Point> points;
+  /// The polygons: in `polygons` (CGAL's readers and glTF) or in `flat` (our own readers);
+  /// one of the two is empty. polygon_count() and polygon() read either.
   std::vector<Polygon> polygons;
+  FlatPolygons flat;
+  std::size_t polygon_count() const { return polygons.empty() ? flat.size() : polygons.size(); }
+  PolygonRef polygon(std::size_t p) const {
+    return polygons.empty() ? PolygonRef{flat.corners_of(p), flat.size_of(p)}
+                            : PolygonRef{polygons[p].data(), polygons[p].size()};
+  }
   std::vector<CGAL::IO::Color> vertex_colors;
   // Per-vertex attributes (empty when absent or not per-vertex).
   std::vector<std::array<double, 3>> rgb;  ///< OBJ "v x y z r g b" colours in [0,1]

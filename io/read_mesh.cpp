@@ -13,6 +13,7 @@
 #include <climits>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <new>
 #include <stdexcept>
 #include <string>
@@ -54,7 +55,14 @@ std::string open_error(const std::string& path, int err) {
   }
 }
 
-std::string read_whole_file(const std::string& path) {
+/// The bytes of a file, in a buffer that is not zeroed first (the read fills it).
+struct FileBytes {
+  std::unique_ptr<char[]> bytes;
+  std::size_t size = 0;
+  std::string_view view() const { return {bytes.get(), size}; }
+};
+
+FileBytes read_whole_file(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);  // a FIFO must not block: it is refused below
   if (fd < 0) throw IoError(open_error(path, errno));
   struct Closer {
@@ -68,16 +76,16 @@ std::string read_whole_file(const std::string& path) {
   const auto size = static_cast<std::uint64_t>(st.st_size);
   // The file, CGAL's polygon soup and the mesh: about four times the size of a binary file.
   check_memory(4.0 * static_cast<double>(size), path + ": reading a " + std::to_string(size) + "-byte file");
-  std::string data(static_cast<std::size_t>(size), '\0');
+  FileBytes data{std::unique_ptr<char[]>(new char[std::max<std::uint64_t>(size, 1)]), static_cast<std::size_t>(size)};
   std::size_t done = 0;
-  while (done < data.size()) {
-    const ssize_t n = ::read(fd, data.data() + done, data.size() - done);
+  while (done < data.size) {
+    const ssize_t n = ::read(fd, data.bytes.get() + done, data.size - done);
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) throw IoError(path + ": read error: " + std::strerror(errno));
     if (n == 0) break;
     done += static_cast<std::size_t>(n);
   }
-  data.resize(done);  // a file that shrank while being read
+  data.size = done;  // a file that shrank while being read
   return data;
 }
 
@@ -89,7 +97,7 @@ std::string read_whole_file(const std::string& path) {
 void fill_face_attributes(const Soup& soup, const std::vector<int>& tri_polygon,
                           const std::vector<std::array<long long, 3>>& tri_texcoord, Mesh& mesh) {
   const Eigen::Index nv = mesh.V.rows(), nf = mesh.F.rows();
-  const std::size_t np = soup.polygons.size();
+  const std::size_t np = soup.polygon_count();
   if (soup.alpha.size() == static_cast<std::size_t>(nv)) {
     if (mesh.vertex_colors.rows() != nv) mesh.vertex_colors = Eigen::MatrixXd::Ones(nv, 3);
     mesh.vertex_colors.conservativeResize(nv, 4);
@@ -135,14 +143,15 @@ Mesh soup_to_mesh(const std::string& path, const Soup& soup, Eigen::Index* dropp
     for (int c = 0; c < 3; ++c) mesh.V(static_cast<Eigen::Index>(i), c) = soup.points[i][c];
 
   std::size_t triangles = 0;
-  for (std::size_t p = 0; p < soup.polygons.size(); ++p) {
-    const Polygon& poly = soup.polygons[p];
+  const std::size_t np = soup.polygon_count();
+  for (std::size_t p = 0; p < np; ++p) {
+    const PolygonRef poly = soup.polygon(p);
     for (std::size_t idx : poly)
       if (idx >= nv)  // a negative index of a binary file arrives wrapped: print it signed
         throw IoError(path + ": face " + std::to_string(p) + " refers to vertex " +
                       std::to_string(static_cast<long long>(idx)) + " (0-based), out of range [0, " +
                       std::to_string(nv) + ")");
-    if (poly.size() >= 3) triangles += poly.size() - 2;
+    if (poly.size >= 3) triangles += poly.size - 2;
   }
   // Polygons are triangulated (a fan when convex, ear clipping otherwise); triangles
   // repeating a vertex are dropped. Per-polygon and per-corner attributes follow the triangles.
@@ -157,17 +166,20 @@ Mesh soup_to_mesh(const std::string& path, const Soup& soup, Eigen::Index* dropp
   std::size_t first_corner = 0;
   std::vector<int> corners;
   std::vector<std::array<int, 3>> tris;
-  for (std::size_t p = 0; p < soup.polygons.size(); ++p) {
-    const Polygon& poly = soup.polygons[p];
+  for (std::size_t p = 0; p < np; ++p) {
+    const PolygonRef poly = soup.polygon(p);
     const std::size_t corner0 = first_corner;
-    first_corner += poly.size();
-    if (poly.size() < 3) {
+    first_corner += poly.size;
+    if (poly.size < 3) {
       ++dropped;
       continue;
     }
     corners.assign(poly.begin(), poly.end());
     tris.clear();
-    triangulate_polygon(soup.points, corners, tris);
+    if (poly.size == 3)
+      tris.push_back({corners[0], corners[1], corners[2]});  // what triangulate_polygon gives, without the call
+    else
+      triangulate_polygon(soup.points, corners, tris);
     for (const auto& [a, b, c] : tris) {
       if (a == b || b == c || a == c) {
         ++dropped;
@@ -237,8 +249,8 @@ Mesh read_mesh(const std::string& path, Eigen::Index* dropped_degenerate) {
 
 Mesh read_mesh(const std::string& path, ReadNotes& notes) {
   const std::string format = mesh_format_from_path(path);
-  const std::string data = read_whole_file(path);
-  return read_mesh_from_memory(data, is_gzip_path(path) ? format + ".gz" : format, path, notes);
+  const FileBytes data = read_whole_file(path);
+  return read_mesh_from_memory(data.view(), is_gzip_path(path) ? format + ".gz" : format, path, notes);
 }
 
 Mesh read_mesh_from_memory(std::string_view data, const std::string& format, const std::string& path,

@@ -14,6 +14,7 @@
 #include <cctype>
 #include <climits>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -69,7 +70,23 @@ long long resolve_obj_index(long long idx, std::size_t count) {
 
 void read_obj(const std::string& path, std::string_view data, Soup& soup) {
   data = without_utf8_bom(data);
-  const auto lines = split_lines(data);
+  // A quick first pass counts the records by their first letter (lines starting "v", "f",
+  // anything else) so that the arrays are allocated once; the parse itself is one pass over
+  // the lines, found in place (no array of lines, no string per line or per number).
+  {
+    std::size_t v_lines = 0, f_lines = 0;
+    for (const char* p = data.data(); p != nullptr && p < data.data() + data.size();) {
+      const char* const end = data.data() + data.size();
+      if (end - p >= 2 && is_space(p[1])) v_lines += p[0] == 'v', f_lines += p[0] == 'f';
+      p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+      if (p) ++p;
+    }
+    soup.points.reserve(v_lines);
+    soup.flat.start.reserve(f_lines + 1);
+    soup.flat.corners.reserve(3 * f_lines);
+    for (auto* per_face : {&soup.polygon_material, &soup.polygon_group, &soup.polygon_object})
+      per_face->reserve(f_lines);
+  }
   auto fail = [&](std::size_t n, const std::string& what) {
     throw IoError(path + ": line " + std::to_string(n + 1) + ": " + what);
   };
@@ -93,8 +110,8 @@ void read_obj(const std::string& path, std::string_view data, Soup& soup) {
     return static_cast<int>(names.size() - 1);
   };
   // The rest of a record's line after its keyword (names may contain spaces).
-  auto rest_of = [&](std::size_t n) {
-    std::string_view line = lines[n];
+  std::string_view line;  // the current line, without its '\n' (and a trailing '\r')
+  auto rest_of = [&]() {
     const std::size_t hash = line.find('#');
     if (hash != std::string_view::npos) line = line.substr(0, hash);
     std::size_t i = 0;
@@ -112,8 +129,14 @@ void read_obj(const std::string& path, std::string_view data, Soup& soup) {
     if (!x) fail(n, std::string("cannot read ") + what + " " + quote_word(word));
     return *x;
   };
-  for (std::size_t n = 0; n < lines.size(); ++n) {
-    split_words(lines[n], w);
+  std::size_t n = 0, next = 0;  // line number - 1; where the next line starts
+  for (std::size_t start = 0; start < data.size(); start = next, ++n) {
+    const char* const nl = static_cast<const char*>(std::memchr(data.data() + start, '\n', data.size() - start));
+    const std::size_t end = nl ? static_cast<std::size_t>(nl - data.data()) : data.size();
+    line = data.substr(start, end - start);
+    next = end + 1;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    split_words(line, w);
     const auto comment = std::find_if(w.begin(), w.end(), [](std::string_view s) { return s.front() == '#'; });
     w.erase(comment, w.end());
     if (w.empty()) continue;
@@ -154,11 +177,11 @@ void read_obj(const std::string& path, std::string_view data, Soup& soup) {
         if (std::find(libs.begin(), libs.end(), lib) == libs.end()) libs.push_back(lib);
       }
     } else if (w[0] == "usemtl") {
-      material = name_index(soup.extra.material_names, rest_of(n));
+      material = name_index(soup.extra.material_names, rest_of());
     } else if (w[0] == "g") {
-      group = name_index(soup.extra.group_names, rest_of(n));  // "g" alone: the default group ""
+      group = name_index(soup.extra.group_names, rest_of());  // "g" alone: the default group ""
     } else if (w[0] == "o") {
-      object = name_index(soup.extra.object_names, rest_of(n));
+      object = name_index(soup.extra.object_names, rest_of());
     } else if (w[0] == "l") {
       ++skipped_lines;
     } else if (w[0] == "p") {
@@ -172,7 +195,6 @@ void read_obj(const std::string& path, std::string_view data, Soup& soup) {
       soup.polygon_material.push_back(material);
       soup.polygon_group.push_back(group);
       soup.polygon_object.push_back(object);
-      Polygon& poly = soup.polygons.emplace_back();
       for (std::size_t k = 1; k < w.size(); ++k, ++corners) {
         ObjCorner c;
         const std::string problem = parse_obj_corner(w[k], c);
@@ -182,7 +204,7 @@ void read_obj(const std::string& path, std::string_view data, Soup& soup) {
           fail(n, "face refers to vertex " + std::to_string(c.v) + ", but only " + std::to_string(soup.points.size()) +
                       " vertices precede it");
         if (c.v > 0 && v > max_index) max_index = v, max_index_line = n;
-        poly.push_back(static_cast<std::size_t>(v));
+        soup.flat.corners.push_back(static_cast<std::size_t>(v));
         auto attribute = [&](std::vector<long long>& slots, long long idx, std::size_t count) {
           if (idx == 0 && slots.empty()) return;
           slots.resize(corners, -1);
@@ -192,6 +214,7 @@ void read_obj(const std::string& path, std::string_view data, Soup& soup) {
         attribute(corner_vt, c.vt, vt.size());
         attribute(corner_vn, c.vn, vn.size());
       }
+      soup.flat.close();
     } else {
       // Free-form geometry and unknown keywords are not part of the surface.
       if (other++ == 0) first_other = std::string(w[0].substr(0, 20));
@@ -209,7 +232,7 @@ void read_obj(const std::string& path, std::string_view data, Soup& soup) {
     soup.notes.dropped.push_back(std::to_string(other) + " OBJ records of unknown kind (the first '" + first_other +
                                  "') are not kept");
   if (soup.points.empty()) throw IoError(path + ": no vertices ('v' records)");
-  if (soup.polygons.empty()) throw IoError(path + ": no faces ('f' records)");
+  if (soup.flat.size() == 0) throw IoError(path + ": no faces ('f' records)");
   const std::size_t nv = soup.points.size();
   if (max_index >= static_cast<long long>(nv))
     fail(max_index_line, "face refers to vertex " + std::to_string(max_index + 1) + ", but the file has " +
@@ -233,12 +256,11 @@ void read_obj(const std::string& path, std::string_view data, Soup& soup) {
     if (std::find(slots.begin(), slots.end(), -1) != slots.end()) return false;  // corners without one
     of_vertex.assign(nv, -1);  // -1 none yet, -2 conflicting or out of range
     std::size_t corner = 0;
-    for (const Polygon& poly : soup.polygons)
-      for (std::size_t v : poly) {
-        const long long idx = slots[corner++] < static_cast<long long>(count) ? slots[corner - 1] : -2;
-        long long& slot = of_vertex[v];
-        slot = slot == -1 ? idx : slot == idx ? slot : -2;
-      }
+    for (std::size_t v : soup.flat.corners) {
+      const long long idx = slots[corner++] < static_cast<long long>(count) ? slots[corner - 1] : -2;
+      long long& slot = of_vertex[v];
+      slot = slot == -1 ? idx : slot == idx ? slot : -2;
+    }
     for (std::size_t v = 0; v < nv; ++v)
       if (of_vertex[v] == -1) of_vertex[v] = v < count ? static_cast<long long>(v) : -3;
     return std::find(of_vertex.begin(), of_vertex.end(), -2) == of_vertex.end();

@@ -204,6 +204,15 @@ class PlyBodyReader {
 
   void at(const PlyElement& e, unsigned long long item) { element_ = &e, item_ = item; }
 
+  /// The next `n` bytes of a binary body as they are, or nullptr (nothing consumed) when fewer remain.
+  const char* take(std::size_t n) {
+    if (data_.size() - pos_ < n) return nullptr;
+    pos_ += n;
+    return data_.data() + pos_ - n;
+  }
+  /// Whether binary values can be taken as they are (a little-endian file on a little-endian host).
+  bool native() const { return format_ == PlyHeader::BinaryLittleEndian && little_host_; }
+
   [[noreturn]] void fail(const std::string& what) const {
     std::string where = "PLY " + element_->name + " " + std::to_string(item_);
     if (format_ == PlyHeader::Ascii) where += " (line " + std::to_string(line_) + ")";
@@ -213,14 +222,7 @@ class PlyBodyReader {
   /// A value of integer type `t` (list counts and indices, colours, other properties).
   long long integer(const PlyType& t, const std::string& name) {
     if (t.is_float) return static_cast<long long>(real(t, name));
-    if (format_ == PlyHeader::Ascii) {
-      const std::string_view w = word();
-      const auto v = parse_strict_integer(w, t.lo, t.hi);
-      if (!v)
-        fail(quote_word(name) + " value " + quote_word(w) + " is not a " + t.name + " (an integer in " +
-             std::to_string(t.lo) + ".." + std::to_string(t.hi) + ")");
-      return *v;
-    }
+    if (format_ == PlyHeader::Ascii) return ascii_integer(t, name);
     const std::uint64_t u = bytes(t.bytes);
     const int shift = 64 - 8 * t.bytes;
     return t.lo < 0 ? static_cast<std::int64_t>(u << shift) >> shift : static_cast<long long>(u);
@@ -229,20 +231,14 @@ class PlyBodyReader {
   /// A value of any type as a double.
   double real(const PlyType& t, const std::string& name) {
     if (!t.is_float) return static_cast<double>(integer(t, name));
-    const bool single = t.bytes == 4;
-    if (format_ == PlyHeader::Ascii) {
-      const std::string_view w = word();
-      const auto x = single ? parse_float(w) : parse_double(w);
-      if (!x) fail("cannot read " + quote_word(name) + " value " + quote_word(w));
-      return *x;
-    }
-    const std::uint64_t u = bytes(single ? 4 : 8);
-    if (single) {
+    if (format_ == PlyHeader::Ascii) return ascii_real(t, name);
+    if (t.bytes == 4) {
       float f;
-      const std::uint32_t u32 = static_cast<std::uint32_t>(u);
+      const std::uint32_t u32 = static_cast<std::uint32_t>(bytes(4));
       std::memcpy(&f, &u32, 4);
       return f;
     }
+    const std::uint64_t u = bytes(8);
     double d;
     std::memcpy(&d, &u, 8);
     return d;
@@ -258,17 +254,40 @@ class PlyBodyReader {
   }
 
  private:
+  // The ascii values and the failures out of line, so that the binary paths above stay small
+  // enough to be inlined into the reader's loop.
+  [[gnu::noinline]] long long ascii_integer(const PlyType& t, const std::string& name) {
+    const std::string_view w = word();
+    const auto v = parse_strict_integer(w, t.lo, t.hi);
+    if (!v)
+      fail(quote_word(name) + " value " + quote_word(w) + " is not a " + t.name + " (an integer in " +
+           std::to_string(t.lo) + ".." + std::to_string(t.hi) + ")");
+    return *v;
+  }
+  [[gnu::noinline]] double ascii_real(const PlyType& t, const std::string& name) {
+    const std::string_view w = word();
+    const auto x = t.bytes == 4 ? parse_float(w) : parse_double(w);
+    if (!x) fail("cannot read " + quote_word(name) + " value " + quote_word(w));
+    return *x;
+  }
+  [[noreturn, gnu::noinline]] void truncated() const { fail("the file ends early (truncated PLY file)"); }
+
   std::string_view word() {
-    while (pos_ < data_.size() && std::isspace(static_cast<unsigned char>(data_[pos_]))) line_ += data_[pos_++] == '\n';
+    while (pos_ < data_.size() && is_space(data_[pos_])) line_ += data_[pos_++] == '\n';
     const std::size_t start = pos_;
-    while (pos_ < data_.size() && !std::isspace(static_cast<unsigned char>(data_[pos_]))) ++pos_;
-    if (pos_ == start) fail("the file ends early (truncated PLY file)");
+    while (pos_ < data_.size() && !is_space(data_[pos_])) ++pos_;
+    if (pos_ == start) truncated();
     return data_.substr(start, pos_ - start);
   }
   std::uint64_t bytes(int n) {
-    if (data_.size() - pos_ < static_cast<std::size_t>(n)) fail("the file ends early (truncated PLY file)");
+    if (data_.size() - pos_ < static_cast<std::size_t>(n)) truncated();
     std::uint64_t u = 0;
     const bool big = format_ == PlyHeader::BinaryBigEndian;
+    if (!big && little_host_) {  // the usual case: the bytes as they are
+      std::memcpy(&u, data_.data() + pos_, static_cast<std::size_t>(n));
+      pos_ += static_cast<std::size_t>(n);
+      return u;
+    }
     for (int i = 0; i < n; ++i)
       u |= std::uint64_t(static_cast<unsigned char>(data_[pos_ + static_cast<std::size_t>(i)]))
            << (8 * (big ? n - 1 - i : i));
@@ -280,6 +299,12 @@ class PlyBodyReader {
   std::string_view data_;
   std::size_t pos_, line_ = 1;
   PlyHeader::Format format_;
+  const bool little_host_ = [] {
+    const std::uint16_t one = 1;
+    unsigned char first = 0;
+    std::memcpy(&first, &one, 1);
+    return first == 1;
+  }();
   const PlyElement* element_ = nullptr;
   unsigned long long item_ = 0;
 };
@@ -383,55 +408,123 @@ void read_ply(const std::string& path, std::string_view data, Soup& soup) {
         if (pi != idx && pi != tex && pi != col[0] && pi != col[1] && pi != col[2] && pi != alpha)
           dropped_face_properties.push_back(e.properties[p].name);
       }
-      soup.polygons.reserve(soup.polygons.size() + e.count);
+      soup.flat.start.reserve(soup.flat.start.size() + e.count);
+      soup.flat.corners.reserve(soup.flat.corners.size() + 3 * e.count);
     }
     double value[3] = {0, 0, 0}, uv[2] = {0, 0}, normal[3] = {0, 0, 0};
     int rgb[4] = {0, 0, 0, 255};
     std::vector<double> corner_uv;
+    // Binary little-endian vertices on a little-endian host: records of fixed size, decoded
+    // from their bytes by the offset and type of each property (the same values as the
+    // generic loop below, which reads the records it cannot take whole, with its errors).
+    struct Slot {
+      std::size_t offset;
+      const PlyType* type;
+      double* target;  // x, y, z, uv, normal, or nullptr
+      int rgb = -1;    // colour channel 0..3, or -1
+      int extra = -1;  // extra vertex property, or -1
+    };
+    std::vector<Slot> slots;
+    std::size_t record = 0;
+    bool fixed = vertex && in.native();
+    for (std::size_t p = 0; p < e.properties.size() && fixed; ++p) {
+      const PlyProperty& prop = e.properties[p];
+      const int pi = static_cast<int>(p);
+      fixed = !prop.is_list;
+      Slot slot{record, &prop.item, nullptr};
+      double* const targets[] = {value, value + 1, value + 2, uv, uv + 1, normal, normal + 1, normal + 2};
+      const int roles[] = {x, y, z, iu, iv, nx, nx >= 0 ? ny : -1, nx >= 0 ? nz : -1};
+      for (int r = 0; r < 8; ++r)
+        if (pi == roles[r]) slot.target = targets[r];
+      for (int c = 0; c < 3; ++c)
+        if (pi == col[c]) slot.rgb = c;
+      if (pi == alpha) slot.rgb = 3;
+      slot.extra = extra_slot[p];
+      slots.push_back(slot);
+      record += static_cast<std::size_t>(prop.size);
+    }
+    auto decode = [](const char* b, const PlyType& t) -> double {
+      switch (t.bytes) {
+        case 1:
+          return t.lo < 0 ? static_cast<double>(static_cast<signed char>(*b)) : static_cast<unsigned char>(*b);
+        case 2: {
+          std::uint16_t u;
+          std::memcpy(&u, b, 2);
+          return t.lo < 0 ? static_cast<double>(static_cast<std::int16_t>(u)) : u;
+        }
+        case 4: {
+          if (t.is_float) {
+            float f;
+            std::memcpy(&f, b, 4);
+            return f;
+          }
+          std::uint32_t u;
+          std::memcpy(&u, b, 4);
+          return t.lo < 0 ? static_cast<double>(static_cast<std::int32_t>(u)) : u;
+        }
+        default: {
+          double d;
+          std::memcpy(&d, b, 8);
+          return d;
+        }
+      }
+    };
     for (unsigned long long j = 0; j < e.count; ++j) {
       in.at(e, j);
-      for (std::size_t p = 0; p < e.properties.size(); ++p) {
-        const PlyProperty& prop = e.properties[p];
-        const int pi = static_cast<int>(p);
-        if (prop.is_list) {
-          const std::size_t n = in.list_count(prop);
-          if (pi == idx) {
-            Polygon& poly = soup.polygons.emplace_back();
-            poly.resize(n);
-            // A negative index wraps to a huge one here; soup_to_mesh reports it signed.
-            for (std::size_t k = 0; k < n; ++k) poly[k] = static_cast<std::size_t>(in.integer(prop.item, prop.name));
-          } else if (pi == tex) {
-            corner_uv.resize(n);
-            for (std::size_t k = 0; k < n; ++k) corner_uv[k] = in.real(prop.item, prop.name);
-          } else {
-            for (std::size_t k = 0; k < n; ++k) in.real(prop.item, prop.name);
+      if (const char* b = fixed ? in.take(record) : nullptr) {
+        for (const Slot& slot : slots) {
+          const double v = decode(b + slot.offset, *slot.type);
+          if (slot.rgb >= 0) {
+            rgb[slot.rgb] = static_cast<int>(v);
+            continue;
           }
-          continue;
+          if (slot.extra >= 0) extra_values[static_cast<std::size_t>(slot.extra)].push_back(v);
+          if (slot.target) *slot.target = v;
         }
-        if (pi == col[0] || pi == col[1] || pi == col[2] || pi == alpha) {
-          rgb[pi == col[0]   ? 0
-              : pi == col[1] ? 1
-              : pi == col[2] ? 2
-                             : 3] = static_cast<int>(in.integer(prop.item, prop.name));
-          continue;
+      } else {
+        for (std::size_t p = 0; p < e.properties.size(); ++p) {
+          const PlyProperty& prop = e.properties[p];
+          const int pi = static_cast<int>(p);
+          if (prop.is_list) {
+            const std::size_t n = in.list_count(prop);
+            if (pi == idx) {
+              // A negative index wraps to a huge one here; soup_to_mesh reports it signed.
+              for (std::size_t k = 0; k < n; ++k)
+                soup.flat.corners.push_back(static_cast<std::size_t>(in.integer(prop.item, prop.name)));
+              soup.flat.close();
+            } else if (pi == tex) {
+              corner_uv.resize(n);
+              for (std::size_t k = 0; k < n; ++k) corner_uv[k] = in.real(prop.item, prop.name);
+            } else {
+              for (std::size_t k = 0; k < n; ++k) in.real(prop.item, prop.name);
+            }
+            continue;
+          }
+          if (pi == col[0] || pi == col[1] || pi == col[2] || pi == alpha) {
+            rgb[pi == col[0]   ? 0
+                : pi == col[1] ? 1
+                : pi == col[2] ? 2
+                               : 3] = static_cast<int>(in.integer(prop.item, prop.name));
+            continue;
+          }
+          const double v = in.real(prop.item, prop.name);
+          if (vertex && extra_slot[p] >= 0) extra_values[static_cast<std::size_t>(extra_slot[p])].push_back(v);
+          if (pi == x) value[0] = v;
+          if (pi == y) value[1] = v;
+          if (pi == z) value[2] = v;
+          if (pi == iu) uv[0] = v;
+          if (pi == iv) uv[1] = v;
+          if (pi == nx) normal[0] = v;
+          if (pi == ny) normal[1] = v;
+          if (pi == nz) normal[2] = v;
         }
-        const double v = in.real(prop.item, prop.name);
-        if (vertex && extra_slot[p] >= 0) extra_values[static_cast<std::size_t>(extra_slot[p])].push_back(v);
-        if (pi == x) value[0] = v;
-        if (pi == y) value[1] = v;
-        if (pi == z) value[2] = v;
-        if (pi == iu) uv[0] = v;
-        if (pi == iv) uv[1] = v;
-        if (pi == nx) normal[0] = v;
-        if (pi == ny) normal[1] = v;
-        if (pi == nz) normal[2] = v;
       }
       if (face) {
         if (col[0] >= 0) soup.face_rgba.push_back({rgb[0] / 255.0, rgb[1] / 255.0, rgb[2] / 255.0, rgb[3] / 255.0});
         if (tex >= 0 && idx >= 0) {
           // Per-corner texture coordinates (2 per corner); a face without them (or with a
           // different count) has none.
-          const std::size_t nc = soup.polygons.back().size();
+          const std::size_t nc = soup.flat.size_of(soup.flat.size() - 1);
           const bool ok = corner_uv.size() == 2 * nc;
           for (std::size_t k = 0; k < nc; ++k) {
             if (ok && std::isfinite(corner_uv[2 * k]) && std::isfinite(corner_uv[2 * k + 1])) {
@@ -473,7 +566,7 @@ void read_ply(const std::string& path, std::string_view data, Soup& soup) {
   if (!all_normals || soup.normals.size() != soup.points.size()) soup.normals.clear();
   if (soup.vertex_colors.size() != soup.points.size()) soup.vertex_colors.clear();
   if (soup.alpha.size() != soup.points.size()) soup.alpha.clear();
-  if (soup.face_rgba.size() != soup.polygons.size()) soup.face_rgba.clear();
+  if (soup.face_rgba.size() != soup.flat.size()) soup.face_rgba.clear();
   soup.face_color_channels = 3;
   for (const auto& c : soup.face_rgba)
     if (c[3] != 1.0) soup.face_color_channels = 4;
@@ -483,8 +576,7 @@ void read_ply(const std::string& path, std::string_view data, Soup& soup) {
       if ((e.name == "face" || e.name == "faces") && (find_scalar(e, "alpha") >= 0 || find_scalar(e, "a") >= 0))
         soup.face_color_channels = 4;
   }
-  std::size_t corners = 0;
-  for (const Polygon& poly : soup.polygons) corners += poly.size();
+  const std::size_t corners = soup.flat.corners.size();
   if (soup.corner_texcoord.size() != corners) soup.corner_texcoord.clear(), soup.texcoord_table.clear();
   auto list = [](const std::vector<std::string>& names) {
     std::string s;

@@ -1,11 +1,16 @@
 // Small text helpers for the readers' guards and diagnostics (internal to msmesh_io).
 #pragma once
+#include <fast_float/fast_float.h>
+
 #include <cctype>
 #include <cerrno>
+#include <climits>
+#include <cstdint>
 #include <cstdlib>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <vector>
 
 namespace msmesh::io_detail {
@@ -25,16 +30,20 @@ inline std::vector<std::string_view> split_lines(std::string_view data) {
   return lines;
 }
 
+/// The C locale's std::isspace (space, \t, \n, \v, \f, \r), without the locale lookup.
+inline bool is_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }
+
 /// Splits `line` into `words` at any whitespace (space, \t, \r, \v, \f, \n); `words` is
 /// reused so that a reader can split every line without allocating.
 inline void split_words(std::string_view line, std::vector<std::string_view>& words) {
   words.clear();
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-    const std::size_t start = i;
-    while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-    if (i > start) words.push_back(line.substr(start, i - start));
+  const char* p = line.data();
+  const char* const end = p + line.size();
+  while (p < end) {
+    while (p < end && is_space(*p)) ++p;
+    const char* const start = p;
+    while (p < end && !is_space(*p)) ++p;
+    if (p > start) words.emplace_back(start, static_cast<std::size_t>(p - start));
   }
 }
 
@@ -65,20 +74,39 @@ std::optional<T> parse_number(std::string_view word, T (*strto)(const char*, cha
   return v;
 }
 
-inline std::optional<double> parse_double(std::string_view word) { return parse_number<double>(word, std::strtod); }
+/// A whole word as a double, correctly rounded (as strtod): fast_float for the usual decimal
+/// forms, strtod itself for what fast_float leaves (hexadecimal, a leading '+', "nan(...)").
+inline std::optional<double> parse_double(std::string_view word) {
+  double v = 0;
+  const auto r = fast_float::from_chars(word.data(), word.data() + word.size(), v);
+  if (r.ec == std::errc() && r.ptr == word.data() + word.size() && !word.empty()) return v;
+  return parse_number<double>(word, std::strtod);
+}
 
 /// As parse_double, rounded to float first (as `istream >> float` reads a PLY float).
 inline std::optional<double> parse_float(std::string_view word) {
+  float v = 0;
+  const auto r = fast_float::from_chars(word.data(), word.data() + word.size(), v);
+  if (r.ec == std::errc() && r.ptr == word.data() + word.size() && !word.empty()) return static_cast<double>(v);
   const auto x = parse_number<float>(word, std::strtof);
   return x ? std::optional<double>(*x) : std::nullopt;
 }
 
 inline std::optional<long long> parse_integer(std::string_view word) {
-  const std::string s(word);
+  char buf[64];
+  std::string heap;
+  const char* s = buf;
+  if (word.size() < sizeof buf) {
+    word.copy(buf, word.size());
+    buf[word.size()] = '\0';
+  } else {
+    heap.assign(word);
+    s = heap.c_str();
+  }
   char* end = nullptr;
   errno = 0;
-  const long long v = std::strtoll(s.c_str(), &end, 10);
-  if (s.empty() || end != s.c_str() + s.size() || errno == ERANGE) return std::nullopt;
+  const long long v = std::strtoll(s, &end, 10);
+  if (word.empty() || end != s + word.size() || errno == ERANGE) return std::nullopt;
   return v;
 }
 
@@ -92,12 +120,20 @@ inline std::string_view without_utf8_bom(std::string_view data) {
 /// (no '+', point, exponent or spaces), so that "2.9", "1e3" or "99999999999" are refused
 /// rather than read as a different number.
 inline std::optional<long long> parse_strict_integer(std::string_view word, long long lo, long long hi) {
-  std::size_t i = !word.empty() && word[0] == '-' ? 1 : 0;
+  const bool negative = !word.empty() && word[0] == '-';
+  const std::size_t i = negative ? 1 : 0;
   if (i == word.size() || word.size() - i > 19) return std::nullopt;
-  for (std::size_t k = i; k < word.size(); ++k)
-    if (word[k] < '0' || word[k] > '9') return std::nullopt;
-  const auto v = parse_integer(word);
-  if (!v || *v < lo || *v > hi) return std::nullopt;
+  std::uint64_t u = 0;  // 19 digits fit in 64 bits unsigned
+  for (std::size_t k = i; k < word.size(); ++k) {
+    const unsigned d = static_cast<unsigned char>(word[k]) - unsigned('0');
+    if (d > 9) return std::nullopt;
+    u = u * 10 + d;
+  }
+  // The range of long long (as strtoll refuses with ERANGE), then [lo, hi].
+  constexpr std::uint64_t kMax = static_cast<std::uint64_t>(LLONG_MAX);
+  if (u > kMax + (negative ? 1 : 0)) return std::nullopt;
+  const long long v = negative ? static_cast<long long>(0 - u) : static_cast<long long>(u);
+  if (v < lo || v > hi) return std::nullopt;
   return v;
 }
 

@@ -8,10 +8,17 @@
 #include <unistd.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <map>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -407,4 +414,166 @@ TEST(ReadErrors, SymlinkLoopUnsearchableFolderAndLongNameAreNotNoSuchFile) {
   EXPECT_NE(message(dir.file("nowhere/absent.obj")).find("no such file"), std::string::npos);
   write_bytes(dir.file("plain"), "x");
   EXPECT_NE(message(dir.file("plain/absent.obj")).find("not a folder"), std::string::npos);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Numbers read exactly as strtod / strtof read them (the text readers parse with fast_float,
+// which is correctly rounded, and fall back to strtod for the forms it leaves).
+
+namespace {
+
+/// Random doubles written in many forms: shortest round-trip, 17 significant digits, few
+/// digits, long digit strings (more than 19 significant digits: fast_float's slow path),
+/// subnormals, large exponents (powers of ten in [min_exponent, max_exponent]), and forms only strtod reads (a leading
+/// '+', hexadecimal).
+std::vector<std::string> number_words(std::size_t count, std::uint64_t seed, int min_exponent = -310,
+                                      int max_exponent = 140) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(min_exponent, max_exponent), form(0, 7), digit(0, 9);
+  std::vector<std::string> words;
+  char buf[128];
+  while (words.size() < count) {
+    const double x = unit(rng) * std::pow(10.0, exponent(rng));
+    switch (form(rng)) {
+      case 0: {
+        const auto r = std::to_chars(buf, buf + sizeof buf, x);
+        words.emplace_back(buf, r.ptr);
+        break;
+      }
+      case 1:
+        std::snprintf(buf, sizeof buf, "%.17g", x);
+        words.emplace_back(buf);
+        break;
+      case 2:
+        std::snprintf(buf, sizeof buf, "%.3e", x);
+        words.emplace_back(buf);
+        break;
+      case 3: {  // 20 to 40 significant digits, then an exponent
+        std::string w = x < 0 ? "-0." : "0.";
+        const int n = 20 + digit(rng) * 2;
+        for (int k = 0; k < n; ++k) w += static_cast<char>('0' + (k == 0 ? 1 + digit(rng) % 9 : digit(rng)));
+        words.push_back(w + "e" + std::to_string(exponent(rng)));
+        break;
+      }
+      case 4:
+        std::snprintf(buf, sizeof buf, "%.6f", x);
+        words.emplace_back(buf);
+        break;
+      case 5:
+        std::snprintf(buf, sizeof buf, "%.25g", x * 1e-5);  // subnormals near the bottom of the range
+        words.emplace_back(buf);
+        break;
+      case 6:
+        std::snprintf(buf, sizeof buf, "%+.9g", x);  // a leading '+' on positive numbers
+        words.emplace_back(buf);
+        break;
+      default:
+        std::snprintf(buf, sizeof buf, "%a", x);  // hexadecimal
+        words.emplace_back(buf);
+        break;
+    }
+  }
+  return words;
+}
+
+}  // namespace
+
+TEST(ReadExact, ObjCoordinatesReadExactlyAsStrtod) {
+  TempDir dir;
+  const std::vector<std::string> words = number_words(3 * 3000, 11);
+  std::string obj;
+  for (std::size_t i = 0; i < words.size(); i += 3)
+    obj += "v " + words[i] + " " + words[i + 1] + " " + words[i + 2] + "\n";
+  for (std::size_t v = 1; v + 2 <= words.size() / 3; v += 3)
+    obj += "f " + std::to_string(v) + " " + std::to_string(v + 1) + " " + std::to_string(v + 2) + "\n";
+  const Mesh m = read_text(dir, "numbers.obj", obj);
+  ASSERT_EQ(m.V.rows(), static_cast<Eigen::Index>(words.size() / 3));
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    const double want = std::strtod(words[i].c_str(), nullptr);
+    const double got = m.V(static_cast<Eigen::Index>(i / 3), static_cast<Eigen::Index>(i % 3));
+    if (std::memcmp(&want, &got, sizeof want) != 0 && differ++ < 5)
+      ADD_FAILURE() << words[i] << ": read " << got << ", strtod gives " << want;
+  }
+  EXPECT_EQ(differ, 0u);
+}
+
+TEST(ReadExact, PlyAsciiFloatsReadExactlyAsStrtofAndDoublesAsStrtod) {
+  TempDir dir;
+  // Floats: within the float range (larger ones are infinite, refused); doubles: the whole range.
+  std::vector<std::string> words = number_words(3 * 1000, 12, -50, 36);
+  for (const std::string& w : number_words(3 * 1000, 13)) words.push_back(w);
+  for (const bool single : {true, false}) {
+    const std::size_t nv = 1000, base = single ? 0 : 3 * nv;
+    const char* type = single ? "float" : "double";
+    std::string ply = "ply\nformat ascii 1.0\nelement vertex " + std::to_string(nv) + "\nproperty " + type +
+                      " x\nproperty " + type + " y\nproperty " + type +
+                      " z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    for (std::size_t v = 0; v < nv; ++v)
+      ply += words[base + 3 * v] + " " + words[base + 3 * v + 1] + " " + words[base + 3 * v + 2] + "\n";
+    ply += "3 0 1 2\n";
+    const Mesh m = read_text(dir, single ? "float.ply" : "double.ply", ply);
+    ASSERT_EQ(m.V.rows(), static_cast<Eigen::Index>(nv));
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < 3 * nv; ++i) {
+      const std::string& w = words[base + i];
+      const double want =
+          single ? static_cast<double>(std::strtof(w.c_str(), nullptr)) : std::strtod(w.c_str(), nullptr);
+      const double got = m.V(static_cast<Eigen::Index>(i / 3), static_cast<Eigen::Index>(i % 3));
+      if (std::memcmp(&want, &got, sizeof want) != 0 && differ++ < 5)
+        ADD_FAILURE() << type << " " << w << ": read " << got << ", expected " << want;
+    }
+    EXPECT_EQ(differ, 0u) << type;
+  }
+}
+
+// Binary STL: the vertices welded as CGAL's reader welded them (numbered on first appearance,
+// equal coordinates one vertex, -0 and +0 alike), now through a hash table.
+TEST(ReadExact, BinaryStlWeldsVerticesInOrderOfFirstAppearance) {
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<int> pick(0, 199);
+  std::vector<std::array<float, 3>> pool(200);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  for (auto& p : pool) p = {unit(rng), unit(rng), unit(rng)};
+  pool[1] = {0.0f, 0.5f, -0.0f};
+  pool[2] = {-0.0f, 0.5f, 0.0f};  // equal to pool[1]: one vertex
+  const std::uint32_t nt = 5000;
+  std::string stl(80, ' ');
+  stl.replace(0, 5, "solid");  // a binary header starting with "solid": the size decides
+  stl.append(reinterpret_cast<const char*>(&nt), 4);
+  std::map<std::array<float, 3>, int, bool (*)(const std::array<float, 3>&, const std::array<float, 3>&)> index(
+      [](const std::array<float, 3>& a, const std::array<float, 3>& b) {
+        return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end());  // -0 == 0, as CGAL's map
+      });
+  std::vector<std::array<float, 3>> expected_v;
+  std::vector<std::array<int, 3>> expected_f;
+  for (std::uint32_t t = 0; t < nt; ++t) {
+    int c[3] = {pick(rng), pick(rng), pick(rng)};
+    while (c[1] == c[0] || (c[0] | c[1]) == 3) c[1] = pick(rng);  // 1 and 2 are one vertex
+    while (c[2] == c[0] || c[2] == c[1] || (c[2] | c[0]) == 3 || (c[2] | c[1]) == 3) c[2] = pick(rng);
+    const float normal[3] = {0, 0, 1};
+    stl.append(reinterpret_cast<const char*>(normal), 12);
+    std::array<int, 3> f{};
+    for (int k = 0; k < 3; ++k) {
+      const auto& p = pool[static_cast<std::size_t>(c[k])];
+      stl.append(reinterpret_cast<const char*>(p.data()), 12);
+      const auto it = index.emplace(p, static_cast<int>(expected_v.size())).first;
+      if (it->second == static_cast<int>(expected_v.size())) expected_v.push_back(p);
+      f[static_cast<std::size_t>(k)] = it->second;
+    }
+    expected_f.push_back(f);
+    stl.append(2, '\0');
+  }
+  TempDir dir;
+  const Mesh m = read_text(dir, "weld.stl", stl);
+  ASSERT_EQ(m.V.rows(), static_cast<Eigen::Index>(expected_v.size()));
+  ASSERT_EQ(m.F.rows(), static_cast<Eigen::Index>(nt));
+  for (std::size_t i = 0; i < expected_v.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const double want = expected_v[i][static_cast<std::size_t>(c)], got = m.V(static_cast<Eigen::Index>(i), c);
+      ASSERT_EQ(std::memcmp(&want, &got, sizeof want), 0) << "vertex " << i;  // the sign of the first appearance too
+    }
+  for (std::uint32_t t = 0; t < nt; ++t)
+    for (int k = 0; k < 3; ++k) ASSERT_EQ(m.F(t, k), expected_f[t][static_cast<std::size_t>(k)]) << "face " << t;
 }
