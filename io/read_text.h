@@ -53,11 +53,10 @@ inline std::vector<std::string_view> split_words(std::string_view line) {
   return words;
 }
 
-/// Parses a whole word as a number with `strto` (strtod semantics: also nan/inf), copying
-/// short words to the stack rather than allocating.
-template <typename T>
-std::optional<T> parse_number(std::string_view word, T (*strto)(const char*, char**)) {
-  if (word.empty()) return std::nullopt;
+/// Calls f(s) with `word` as a NUL-terminated string, copied to the stack when short (no
+/// allocation on the readers' paths).
+template <class F>
+auto with_c_string(std::string_view word, F&& f) {
   char buf[64];
   std::string heap;
   const char* s = buf;
@@ -68,10 +67,19 @@ std::optional<T> parse_number(std::string_view word, T (*strto)(const char*, cha
     heap.assign(word);
     s = heap.c_str();
   }
-  char* end = nullptr;
-  const T v = strto(s, &end);
-  if (end != s + word.size()) return std::nullopt;
-  return v;
+  return f(s);
+}
+
+/// Parses a whole word as a number with `strto` (strtod semantics: also nan/inf).
+template <typename T>
+std::optional<T> parse_number(std::string_view word, T (*strto)(const char*, char**)) {
+  if (word.empty()) return std::nullopt;
+  return with_c_string(word, [&](const char* s) -> std::optional<T> {
+    char* end = nullptr;
+    const T v = strto(s, &end);
+    if (end != s + word.size()) return std::nullopt;
+    return v;
+  });
 }
 
 /// A whole word as a double, correctly rounded (as strtod): fast_float for the usual decimal
@@ -93,21 +101,14 @@ inline std::optional<double> parse_float(std::string_view word) {
 }
 
 inline std::optional<long long> parse_integer(std::string_view word) {
-  char buf[64];
-  std::string heap;
-  const char* s = buf;
-  if (word.size() < sizeof buf) {
-    word.copy(buf, word.size());
-    buf[word.size()] = '\0';
-  } else {
-    heap.assign(word);
-    s = heap.c_str();
-  }
-  char* end = nullptr;
-  errno = 0;
-  const long long v = std::strtoll(s, &end, 10);
-  if (word.empty() || end != s + word.size() || errno == ERANGE) return std::nullopt;
-  return v;
+  if (word.empty()) return std::nullopt;
+  return with_c_string(word, [&](const char* s) -> std::optional<long long> {
+    char* end = nullptr;
+    errno = 0;
+    const long long v = std::strtoll(s, &end, 10);
+    if (end != s + word.size() || errno == ERANGE) return std::nullopt;
+    return v;
+  });
 }
 
 /// Skips a UTF-8 byte-order mark at the start of a text file (some Windows exporters write one).

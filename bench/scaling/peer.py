@@ -42,6 +42,9 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import run as scaling_run  # noqa: E402  (bench/scaling/run.py: the same exponent fit)
+
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 MESHES = os.path.normpath(os.path.join(ROOT, "..", "shared", "data", "meshes"))
 REAL_MESHES = ["meshtgv_liu2021/fandisk/noisy.obj", "meshtgv_liu2021/cone/noisy.obj"]
@@ -123,14 +126,8 @@ def count_faces(path):
 
 
 def fit_exponent(points):
-    """Least-squares slope of log(seconds) against log(faces)."""
-    pts = [(math.log(x), math.log(y)) for x, y in points if y > 0]
-    if len(pts) < 2:
-        return float("nan")
-    n = len(pts)
-    mx = sum(p[0] for p in pts) / n
-    my = sum(p[1] for p in pts) / n
-    return sum((x - mx) * (y - my) for x, y in pts) / sum((x - mx) ** 2 for x, _ in pts)
+    """Least-squares slope of log(seconds) against log(faces) of (faces, seconds) points."""
+    return scaling_run.fit_exponent([{"faces": x, "s": y} for x, y in points], "s", lo=0)
 
 
 def spread(values, fmt, bold=False):
