@@ -68,25 +68,47 @@ Eigen::MatrixXd bilateral_filter_normals(const Eigen::MatrixXd& V, const Eigen::
     sigma_s = nbr.empty() ? 1.0 : sum / double(nbr.size());
   }
   const double is2 = 1.0 / (2 * sigma_s * sigma_s), ir2 = 1.0 / (2 * o.sigma_r * o.sigma_r);
-  Eigen::MatrixXd N = face_normals(Vn, F), Nn(nf, 3);
+  // Row-major copies (one face's three coordinates side by side) for the neighbour loop; the
+  // arithmetic is Eigen's, term for term, so the result is the same to the last bit.
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+  const Rows Cr = C;
+  Rows N = face_normals(Vn, F), Nn(nf, 3);
   for (int it = 0; it < o.normal_iterations; ++it) {
 #pragma omp parallel for schedule(static) if (nf >= 8192)
     for (Eigen::Index f = 0; f < nf; ++f) {
-      Eigen::RowVector3d s = A(f) * N.row(f);
+      const double* cf = Cr.data() + 3 * f;
+      const double* nf3 = N.data() + 3 * f;
+      double s0 = A(f) * nf3[0], s1 = A(f) * nf3[1], s2 = A(f) * nf3[2];
       for (int i = start[f]; i < start[f + 1]; ++i) {
-        const int g = nbr[i];
-        const double ds = (C.row(f) - C.row(g)).squaredNorm();
-        const double dr = (N.row(f) - N.row(g)).squaredNorm();
-        s += A(g) * std::exp(-ds * is2 - dr * ir2) * N.row(g);
+        const Eigen::Index g = nbr[i];
+        const double* cg = Cr.data() + 3 * g;
+        const double* ng = N.data() + 3 * g;
+        const double c0 = cf[0] - cg[0], c1 = cf[1] - cg[1], c2 = cf[2] - cg[2];
+        const double n0 = nf3[0] - ng[0], n1 = nf3[1] - ng[1], n2 = nf3[2] - ng[2];
+        const double ds = c0 * c0 + c1 * c1 + c2 * c2;
+        const double dr = n0 * n0 + n1 * n1 + n2 * n2;
+        const double w = A(g) * std::exp(-ds * is2 - dr * ir2);
+        s0 += w * ng[0];
+        s1 += w * ng[1];
+        s2 += w * ng[2];
       }
-      const double len = s.norm();
-      Nn.row(f) = len > 0 ? Eigen::RowVector3d(s / len) : Eigen::RowVector3d(N.row(f));
+      const double len = std::sqrt(s0 * s0 + s1 * s1 + s2 * s2);
+      double* out = Nn.data() + 3 * f;
+      if (len > 0) {
+        out[0] = s0 / len;
+        out[1] = s1 / len;
+        out[2] = s2 / len;
+      } else {
+        out[0] = nf3[0];
+        out[1] = nf3[1];
+        out[2] = nf3[2];
+      }
     }
     N.swap(Nn);
     if (progress && !progress({"bilateral normals", it + 1, o.normal_iterations, std::nan("")}))
       throw Cancelled("bilateral filtering cancelled");
   }
-  return N;
+  return Eigen::MatrixXd(N);
 }
 
 Eigen::MatrixXd classic_vertex_update(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
