@@ -1,6 +1,6 @@
 #include "msmesh/taubin.h"
 
-#include <Eigen/SparseCore>
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -20,34 +20,47 @@ void TaubinOptions::validate() const {
 Eigen::MatrixXd taubin_smooth(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const TaubinOptions& o) {
   o.validate();
   validate_mesh(V, F, "taubin smoothing");
-  // W: the row-normalised vertex adjacency (each edge once per direction).
-  std::vector<Eigen::Triplet<double>> t;
-  t.reserve(static_cast<std::size_t>(F.rows()) * 6);
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
+  // W: the row-normalised vertex adjacency (each edge once per direction), as the sorted
+  // neighbours of each vertex (CSR); W X is summed in that order.
+  const Eigen::Index nv = V.rows(), nf = F.rows();
+  std::vector<int> start(static_cast<std::size_t>(nv) + 1, 0);
+  for (Eigen::Index i = 0; i < F.size(); ++i) start[static_cast<std::size_t>(F.data()[i]) + 1] += 2;
+  for (std::size_t i = 0; i + 1 < start.size(); ++i) start[i + 1] += start[i];
+  std::vector<int> nbr(static_cast<std::size_t>(start.back())), fill(start.begin(), start.end() - 1);
+  for (Eigen::Index f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) {
-      t.emplace_back(F(f, k), F(f, (k + 1) % 3), 1.0);
-      t.emplace_back(F(f, (k + 1) % 3), F(f, k), 1.0);
+      const int a = F(f, k), b = F(f, (k + 1) % 3);
+      nbr[static_cast<std::size_t>(fill[static_cast<std::size_t>(a)]++)] = b;
+      nbr[static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++)] = a;
     }
-  Eigen::SparseMatrix<double, Eigen::RowMajor> W(V.rows(), V.rows());
-  W.setFromTriplets(t.begin(), t.end(), [](double, double) { return 1.0; });  // an edge counts once
-  for (Eigen::Index i = 0; i < W.outerSize(); ++i) {
-    const double n = static_cast<double>(W.outerIndexPtr()[i + 1] - W.outerIndexPtr()[i]);
-    if (n == 0) continue;
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(W, i); it; ++it) it.valueRef() = 1.0 / n;
+  std::vector<int> count(static_cast<std::size_t>(nv));
+  for (Eigen::Index i = 0; i < nv; ++i) {
+    int* first = nbr.data() + start[static_cast<std::size_t>(i)];
+    int* last = nbr.data() + start[static_cast<std::size_t>(i) + 1];
+    std::sort(first, last);
+    count[static_cast<std::size_t>(i)] = static_cast<int>(std::unique(first, last) - first);  // an edge counts once
   }
-  // Rows without neighbours (unreferenced vertices): W V = 0 would pull them to the origin.
-  std::vector<bool> isolated(static_cast<std::size_t>(V.rows()));
-  for (Eigen::Index i = 0; i < V.rows(); ++i)
-    isolated[static_cast<std::size_t>(i)] = W.outerIndexPtr()[i + 1] == W.outerIndexPtr()[i];
-  Eigen::MatrixXd X = V, L;
+  // Rows without neighbours (unreferenced vertices) do not move: W V = 0 would pull them to the
+  // origin. Each step is X ← X + step (W X − X), coordinate by coordinate, in rows.
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+  Rows X = V, Xn(nv, 3);
   for (int it = 0; it < o.iterations; ++it)
     for (const double step : {o.lambda, o.mu}) {
-      L = W * X - X;
-      for (Eigen::Index i = 0; i < X.rows(); ++i)
-        if (isolated[static_cast<std::size_t>(i)]) L.row(i).setZero();
-      X += step * L;
+#pragma omp parallel for schedule(static) if (nv >= 65536)
+      for (Eigen::Index i = 0; i < nv; ++i) {
+        const int n = count[static_cast<std::size_t>(i)];
+        const int* nb = nbr.data() + start[static_cast<std::size_t>(i)];
+        const double w = n > 0 ? 1.0 / n : 0.0;
+        for (int c = 0; c < 3; ++c) {
+          double sum = 0;
+          for (int j = 0; j < n; ++j) sum += w * X(nb[j], c);
+          const double l = n > 0 ? sum - X(i, c) : 0.0;
+          Xn(i, c) = X(i, c) + step * l;
+        }
+      }
+      X.swap(Xn);
     }
-  return X;
+  return Eigen::MatrixXd(X);
 }
 
 }  // namespace msmesh
