@@ -27,29 +27,31 @@ T to_integer(double x) {
   return static_cast<T>(r);
 }
 
+/// One integer value as T, binary or ascii (rounded and clamped to T's range).
+template <class T>
+void put_integer(OutBuffer& o, bool binary, double x) {
+  const T v = to_integer<T>(x);
+  if (binary)
+    o.binary<T>(v);
+  else
+    o.integer(v);
+}
+
 /// One value as `type`, binary or ascii (integers rounded and clamped to the type's range).
 void put(OutBuffer& o, bool binary, ScalarType type, double x) {
   switch (type) {
     case ScalarType::Int8:
-      binary ? void(o.binary<std::int8_t>(to_integer<std::int8_t>(x))) : void(o.integer(to_integer<std::int8_t>(x)));
-      return;
+      return put_integer<std::int8_t>(o, binary, x);
     case ScalarType::UInt8:
-      binary ? void(o.binary<std::uint8_t>(to_integer<std::uint8_t>(x))) : void(o.integer(to_integer<std::uint8_t>(x)));
-      return;
+      return put_integer<std::uint8_t>(o, binary, x);
     case ScalarType::Int16:
-      binary ? void(o.binary<std::int16_t>(to_integer<std::int16_t>(x))) : void(o.integer(to_integer<std::int16_t>(x)));
-      return;
+      return put_integer<std::int16_t>(o, binary, x);
     case ScalarType::UInt16:
-      binary ? void(o.binary<std::uint16_t>(to_integer<std::uint16_t>(x)))
-             : void(o.integer(to_integer<std::uint16_t>(x)));
-      return;
+      return put_integer<std::uint16_t>(o, binary, x);
     case ScalarType::Int32:
-      binary ? void(o.binary<std::int32_t>(to_integer<std::int32_t>(x))) : void(o.integer(to_integer<std::int32_t>(x)));
-      return;
+      return put_integer<std::int32_t>(o, binary, x);
     case ScalarType::UInt32:
-      binary ? void(o.binary<std::uint32_t>(to_integer<std::uint32_t>(x)))
-             : void(o.integer(to_integer<std::uint32_t>(x)));
-      return;
+      return put_integer<std::uint32_t>(o, binary, x);
     case ScalarType::Float32:
       binary ? void(o.binary<float>(static_cast<float>(x))) : void(o.real32(static_cast<float>(x)));
       return;

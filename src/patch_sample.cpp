@@ -48,7 +48,6 @@ PatchSample sample_patches(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, E
   const VertexFaces vf(F, V.rows());
   // -1: not in the sample; otherwise the rings to the nearest cut (set below).
   std::vector<std::int32_t> in(static_cast<std::size_t>(nf), -1);
-  std::vector<int> queue;
   for (Eigen::Index p = 0; p < patches; ++p) {
     // The seed: the first face not yet taken from an even spacing over the face order.
     Eigen::Index seed = (2 * p + 1) * nf / (2 * patches);
@@ -69,7 +68,7 @@ PatchSample sample_patches(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, E
   }
   // Rings to the nearest cut: breadth first from the sample's faces that touch a face outside it.
   constexpr std::int32_t kFar = 1 << 30;
-  queue.clear();
+  std::vector<int> queue;
   for (const int f : chosen) {
     bool cut = false;
     vf.for_each_neighbour(F, f, [&](int g) { cut = cut || in[static_cast<std::size_t>(g)] < 0; });
