@@ -2,10 +2,12 @@
 // vertex update (Sun et al. 2007): the widely used reference denoiser users compare against.
 #include "msmesh/bilateral.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <vector>
 
+#include "bilateral_pairs.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
@@ -107,6 +109,89 @@ Eigen::MatrixXd bilateral_filter_normals(const Eigen::MatrixXd& V, const Eigen::
     N.swap(Nn);
     if (progress && !progress({"bilateral normals", it + 1, o.normal_iterations, std::nan("")}))
       throw Cancelled("bilateral filtering cancelled");
+  }
+  return Eigen::MatrixXd(N);
+}
+
+Eigen::MatrixXd detail::bilateral_normals_by_pairs(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, int passes,
+                                                   double sigma_r) {
+  const detail::Normalization norm = detail::normalization_for(V, F);
+  const Eigen::MatrixXd Vn = norm.apply(V);
+  const Eigen::Index nf = F.rows();
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+  const Rows C = face_barycenters(Vn, F);
+  const Eigen::VectorXd A = face_areas(Vn, F);
+  std::vector<int> start, nbr;
+  face_vertex_neighbours(F, V.rows(), start, nbr);
+  // Each unordered pair {f, g} once (f < g), and for every entry of the neighbour lists the
+  // pair it belongs to: f's entry for g is found in the lists of f and, from the other side,
+  // of g (a dozen entries each).
+  const std::size_t entries = nbr.size();
+  std::vector<int> pair_of(entries, -1), first, second;
+  first.reserve(entries / 2);
+  second.reserve(entries / 2);
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int i = start[f]; i < start[f + 1]; ++i) {
+      const int g = nbr[i];
+      if (g < f) continue;
+      const int p = static_cast<int>(first.size());
+      first.push_back(static_cast<int>(f));
+      second.push_back(g);
+      pair_of[i] = p;
+      for (int j = start[g]; j < start[g + 1]; ++j)
+        if (nbr[j] == f) {
+          pair_of[j] = p;
+          break;
+        }
+    }
+  const Eigen::Index np = static_cast<Eigen::Index>(first.size());
+  std::vector<double> spatial(static_cast<std::size_t>(np)), range(static_cast<std::size_t>(np));
+  double sum = 0;  // sigma_s 0: the mean distance between neighbouring face centres
+  for (Eigen::Index p = 0; p < np; ++p) {
+    const double* a = C.data() + 3 * first[p];
+    const double* b = C.data() + 3 * second[p];
+    const double c0 = a[0] - b[0], c1 = a[1] - b[1], c2 = a[2] - b[2];
+    spatial[p] = c0 * c0 + c1 * c1 + c2 * c2;
+    sum += std::sqrt(spatial[p]);
+  }
+  const double sigma_s = np > 0 ? sum / double(np) : 1.0;
+  const double is2 = 1.0 / (2 * sigma_s * sigma_s), ir2 = 1.0 / (2 * sigma_r * sigma_r);
+  for (Eigen::Index p = 0; p < np; ++p) spatial[p] = std::exp(-spatial[p] * is2);
+  // Entry weights without the range part: the neighbour's area times the pair's spatial weight.
+  std::vector<double> weight(entries);
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int i = start[f]; i < start[f + 1]; ++i) weight[i] = A(nbr[i]) * spatial[pair_of[i]];
+  Rows N = face_normals(Vn, F), Nn(nf, 3);
+  for (int it = 0; it < passes; ++it) {
+#pragma omp parallel for schedule(static) if (np >= 65536)
+    for (Eigen::Index p = 0; p < np; ++p) {
+      const double* a = N.data() + 3 * first[p];
+      const double* b = N.data() + 3 * second[p];
+      const double n0 = a[0] - b[0], n1 = a[1] - b[1], n2 = a[2] - b[2];
+      range[p] = std::exp(-(n0 * n0 + n1 * n1 + n2 * n2) * ir2);
+    }
+#pragma omp parallel for schedule(static) if (nf >= 8192)
+    for (Eigen::Index f = 0; f < nf; ++f) {
+      const double* nf3 = N.data() + 3 * f;
+      double s0 = A(f) * nf3[0], s1 = A(f) * nf3[1], s2 = A(f) * nf3[2];
+      for (int i = start[f]; i < start[f + 1]; ++i) {
+        const double* ng = N.data() + 3 * nbr[i];
+        const double w = weight[i] * range[pair_of[i]];
+        s0 += w * ng[0];
+        s1 += w * ng[1];
+        s2 += w * ng[2];
+      }
+      const double len = std::sqrt(s0 * s0 + s1 * s1 + s2 * s2);
+      double* out = Nn.data() + 3 * f;
+      if (len > 0) {
+        out[0] = s0 / len;
+        out[1] = s1 / len;
+        out[2] = s2 / len;
+      } else {
+        std::copy(nf3, nf3 + 3, out);
+      }
+    }
+    N.swap(Nn);
   }
   return Eigen::MatrixXd(N);
 }

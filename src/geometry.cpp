@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace msmesh {
 
@@ -58,8 +59,47 @@ Eigen::MatrixXd corner_line_lengths(const Eigen::MatrixXd& V, const Eigen::Matri
 
 double mean_edge_length(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   if (F.rows() == 0) return 0.0;
-  const Topology t = build_topology(F, V.rows());
-  return edge_lengths(V, t).mean();
+  // The unique edges in build_topology's numbering (by lower, then higher vertex), without the
+  // rest of the topology: the same lengths in the same order, so the same mean to the last bit,
+  // at about a third of the cost (it is taken several times per denoise).
+  const Eigen::Index nf = F.rows(), nv = V.rows();
+  bool plain = F.cols() == 3;
+  for (Eigen::Index f = 0; f < nf && plain; ++f)
+    for (int k = 0; k < 3; ++k) plain = plain && F(f, k) >= 0 && F(f, k) < nv;
+  if (!plain) {  // (build_topology names what is wrong)
+    const Topology t = build_topology(F, V.rows());
+    return edge_lengths(V, t).mean();
+  }
+  std::vector<int> start(static_cast<size_t>(nv) + 1, 0);
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) ++start[static_cast<size_t>(std::min(F(f, (k + 1) % 3), F(f, (k + 2) % 3))) + 1];
+  for (size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+  std::vector<int> hi(static_cast<size_t>(3 * nf));
+  {
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (Eigen::Index f = 0; f < nf; ++f)
+      for (int k = 0; k < 3; ++k) {
+        const int a = F(f, (k + 1) % 3), b = F(f, (k + 2) % 3);
+        hi[static_cast<size_t>(fill[static_cast<size_t>(std::min(a, b))]++)] = std::max(a, b);
+      }
+  }
+  std::vector<int> lo_of;
+  lo_of.reserve(hi.size() / 2 + 1);
+  std::vector<int> hi_of;
+  hi_of.reserve(hi.size() / 2 + 1);
+  for (Eigen::Index v = 0; v < nv; ++v) {
+    const auto b = hi.begin() + start[static_cast<size_t>(v)], e = hi.begin() + start[static_cast<size_t>(v) + 1];
+    std::sort(b, e);
+    for (auto i = b; i != e; ++i)
+      if (i == b || *i != *(i - 1)) {
+        lo_of.push_back(static_cast<int>(v));
+        hi_of.push_back(*i);
+      }
+  }
+  Eigen::VectorXd l(static_cast<Eigen::Index>(lo_of.size()));
+  for (Eigen::Index e = 0; e < l.size(); ++e)
+    l(e) = (V.row(lo_of[static_cast<size_t>(e)]) - V.row(hi_of[static_cast<size_t>(e)])).norm();
+  return l.mean();
 }
 
 Eigen::MatrixXd vertex_normals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {

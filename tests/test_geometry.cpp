@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/topology.h"
 #include "test_helpers.h"
@@ -95,4 +96,21 @@ TEST(Geometry, DegenerateFacesIsolatedVerticesAndNoFaces) {
   EXPECT_TRUE(vn.row(2).isApprox(Eigen::RowVector3d(0, 0, 1)));
   EXPECT_TRUE(vn.row(3).allFinite());
   EXPECT_EQ(mean_edge_length(m.V, Eigen::MatrixXi(0, 3)), 0.0);
+}
+
+TEST(Geometry, MeanEdgeLengthIsTheMeanOverTheTopologysEdgesToTheLastBit) {
+  // The same edges in the same order as build_topology, so the same sum: the scale every
+  // stage normalises by must not move by a bit. A noisy closed mesh, a grid (boundary), and
+  // one with a vertex no face uses; an index out of range is refused as before.
+  const Mesh cube = test::noisy_cube(5, 0.3);
+  Mesh grid = test::noisy(test::grid(6, 0.2), 0.05);
+  for (const Mesh* m : {&cube, static_cast<const Mesh*>(&grid)})
+    EXPECT_EQ(mean_edge_length(m->V, m->F), edge_lengths(m->V, build_topology(m->F, m->V.rows())).mean());
+  Eigen::MatrixXd V = grid.V;
+  V.conservativeResize(V.rows() + 1, 3);
+  V.row(V.rows() - 1) << 100, 100, 100;
+  EXPECT_EQ(mean_edge_length(V, grid.F), edge_lengths(grid.V, build_topology(grid.F, grid.V.rows())).mean());
+  Eigen::MatrixXi bad = grid.F;
+  bad(0, 0) = -1;
+  EXPECT_THROW(mean_edge_length(grid.V, bad), InvalidInput);
 }
