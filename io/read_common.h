@@ -141,6 +141,14 @@ struct Soup {
   /// and object names, extra vertex properties (#points values), position type, glTF document.
   Mesh extra;
   ReadNotes notes;
+  /// The mesh itself, when the reader built it straight into its final arrays (binary PLY and
+  /// STL whose faces are all triangles: read_ply.cpp, read_stl.cpp). Its V and F are checked as
+  /// soup_to_mesh checks them (indices in range, finite coordinates within validate_mesh's span;
+  /// triangles repeating a vertex left out and counted in `direct_dropped`), so soup_to_mesh
+  /// is skipped; the rest of the soup is empty.
+  bool direct = false;
+  Mesh mesh;
+  Eigen::Index direct_dropped = 0;
 };
 
 // ---------------------------------------------------------------------------------------------
