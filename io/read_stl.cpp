@@ -7,6 +7,7 @@
 // ascii parse as binary, which "succeeds" on files shorter than 84 bytes.
 #include <CGAL/IO/STL.h>
 
+#include <algorithm>
 #include <cctype>
 #include <climits>
 #include <cmath>
@@ -64,24 +65,38 @@ void read_binary_stl(const std::string& path, std::string_view data, std::uint32
   };
   const char* const body = data.data() + 84;
   auto corner = [body](std::size_t c) { return body + 50 * (c / 3) + 12 + 12 * (c % 3); };
-  constexpr std::size_t kAhead = 12;  // corners (4 triangles)
+  // Two-stage prefetch: the slot of corner c + 2 * kAhead, then the point that slot holds (the
+  // comparison's load) for corner c + kAhead; the hashes wait in a ring.
+  constexpr std::size_t kAhead = 16, kRing = 64;
+  static_assert(kRing >= 2 * kAhead + 1 && (kRing & (kRing - 1)) == 0, "the ring holds the corners in flight");
+  std::uint64_t ring[kRing];
   const std::size_t corners = 3 * nt;
+  auto hash_corner = [&](std::size_t c) {
+    float xyz[3];
+    std::memcpy(xyz, corner(c), 12);
+    return point_hash(xyz);
+  };
+  for (std::size_t c = 0; c < std::min(corners, 2 * kAhead); ++c) ring[c % kRing] = hash_corner(c);
   std::size_t kept = 0, points = 0;
   Eigen::Index dropped = 0;
   for (std::size_t t = 0; t < nt; ++t) {
     std::uint32_t id[3];
     for (std::size_t k = 0; k < 3; ++k) {
       const std::size_t c = 3 * t + k;
+      if (c + 2 * kAhead < corners) {
+        const std::uint64_t h = hash_corner(c + 2 * kAhead);
+        ring[(c + 2 * kAhead) % kRing] = h;
+        __builtin_prefetch(slots.data() + (h & mask));
+      }
       if (c + kAhead < corners) {
-        float ahead[3];
-        std::memcpy(ahead, corner(c + kAhead), 12);
-        __builtin_prefetch(slots.data() + (point_hash(ahead) & mask));
+        const std::uint32_t first = slots[ring[(c + kAhead) % kRing] & mask];
+        if (first != UINT32_MAX) __builtin_prefetch(coords.data() + 3 * std::size_t(first));
       }
       float xyz[3];
       std::memcpy(xyz, corner(c), 12);
       if (!(std::isfinite(xyz[0]) && std::isfinite(xyz[1]) && std::isfinite(xyz[2])))
         throw IoError(path + ": triangle " + std::to_string(t) + " has a non-finite vertex coordinate");
-      std::size_t s = point_hash(xyz) & mask;
+      std::size_t s = ring[c % kRing] & mask;
       std::uint32_t found = UINT32_MAX;
       for (; slots[s] != UINT32_MAX; s = (s + 1) & mask) {
         const float* q = coords.data() + 3 * std::size_t(slots[s]);
