@@ -1,5 +1,5 @@
-// read_mesh and read_mesh_from_memory: the file read into memory (existence, size and memory
-// checks), the reader of its format (read_obj.cpp, read_off.cpp, read_ply.cpp, read_stl.cpp),
+// read_mesh and read_mesh_from_memory: the file mapped or read into memory (existence, size and
+// memory checks), the reader of its format (read_obj.cpp, read_off.cpp, read_ply.cpp, read_stl.cpp),
 // the errors of CGAL and the allocator turned into IoError naming the file, and the polygon
 // soup turned into a Mesh (polygons triangulated, degenerate triangles dropped, attributes, notes).
 #include "msmesh/read_mesh.h"
