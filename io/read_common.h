@@ -9,7 +9,9 @@
 // than a command-line tool can, so each is checked before CGAL sees it (found by reading CGAL
 // 5.5's readers and by fuzzing them under AddressSanitizer); what each reader guards against
 // is listed at the top of its file. read_off.cpp and read_stl.cpp are the only translation
-// units that include CGAL's I/O headers. The whole file is read into memory once.
+// units that include CGAL's I/O headers. The whole file is in memory once (mapped from 64 KB on,
+// read_mesh.cpp). Binary PLY and STL files of triangles skip the soup: their readers fill the
+// mesh's own arrays (Soup::direct).
 #pragma once
 #include <CGAL/IO/Color.h>
 #include <CGAL/Simple_cartesian.h>
@@ -141,6 +143,14 @@ struct Soup {
   /// and object names, extra vertex properties (#points values), position type, glTF document.
   Mesh extra;
   ReadNotes notes;
+  /// The mesh itself, when the reader built it straight into its final arrays (binary PLY and
+  /// STL whose faces are all triangles: read_ply.cpp, read_stl.cpp). Its V and F are checked as
+  /// soup_to_mesh checks them (indices in range, finite coordinates within validate_mesh's span;
+  /// triangles repeating a vertex left out and counted in `direct_dropped`), so soup_to_mesh
+  /// is skipped; the rest of the soup is empty.
+  bool direct = false;
+  Mesh mesh;
+  Eigen::Index direct_dropped = 0;
 };
 
 // ---------------------------------------------------------------------------------------------

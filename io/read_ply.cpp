@@ -11,12 +11,15 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "msmesh/errors.h"
@@ -327,12 +330,110 @@ int find_scalar(const PlyElement& e, const char* name) {
   return -1;
 }
 
+/// The usual binary file read straight into the mesh (soup.mesh, soup.direct): binary little
+/// endian on a little-endian host, one vertex element of x, y, z only (float or double) followed
+/// by one face element of a vertex_indices list only (uchar or char count, int or uint items),
+/// every face a triangle of three distinct vertices in range, every coordinate finite and within
+/// validate_mesh's span. One pass over each element, fixed records decoded by offset, the checks
+/// accumulated without branches. Returns false, `soup` unchanged, for any other file: the general
+/// reader below reads it, with its errors and notes.
+bool read_binary_triangles(std::string_view data, const PlyHeader& h, bool native, Soup& soup) {
+  if (!native || h.elements.size() != 2) return false;
+  const PlyElement& ve = h.elements[0];
+  const PlyElement& fe = h.elements[1];
+  if (!(ve.name == "vertex" || ve.name == "vertices") || !(fe.name == "face" || fe.name == "faces")) return false;
+  if (ve.properties.size() != 3 || fe.properties.size() != 1) return false;
+  std::size_t offset[3] = {0, 0, 0}, record = 0;
+  bool single[3] = {false, false, false};
+  for (const PlyProperty& p : ve.properties) {  // x, y and z each once (parse_ply_header checked)
+    const int c = p.name == "x" ? 0 : p.name == "y" ? 1 : p.name == "z" ? 2 : -1;
+    if (c < 0 || p.is_list) return false;
+    offset[c] = record;
+    single[c] = p.size == 4;
+    record += static_cast<std::size_t>(p.size);
+  }
+  const PlyProperty& list = fe.properties[0];
+  if (!list.is_list || list.count_size != 1 || list.size != 4 || list.item.is_float) return false;
+  const std::size_t nv = ve.count, nf = fe.count;
+  if (nv == 0 || nf == 0 || nv > static_cast<std::size_t>(INT_MAX)) return false;
+  constexpr std::size_t kFaceRecord = 1 + 3 * 4;
+  if ((data.size() - h.body_offset) / kFaceRecord < nf ||
+      (data.size() - h.body_offset - kFaceRecord * nf) / record < nv)
+    return false;
+  Mesh mesh;
+  mesh.V.resize(static_cast<Eigen::Index>(nv), 3);
+  double* const col[3] = {mesh.V.data(), mesh.V.data() + nv, mesh.V.data() + 2 * nv};
+  const char* b = data.data() + h.body_offset;
+  bool finite = true;
+  double lo[3], hi[3];
+  for (int c = 0; c < 3; ++c) lo[c] = hi[c] = 0;
+  auto vertices = [&](auto as_float) {
+    constexpr std::size_t kBytes = decltype(as_float)::value ? 4 : 8;
+    for (int c = 0; c < 3; ++c) {
+      // The first value starts the range, so that it need not hold 0.
+      double v0;
+      if constexpr (kBytes == 4) {
+        float f;
+        std::memcpy(&f, b + offset[c], 4);
+        v0 = f;
+      } else {
+        std::memcpy(&v0, b + offset[c], 8);
+      }
+      lo[c] = hi[c] = v0;
+    }
+    for (std::size_t i = 0; i < nv; ++i, b += record)
+      for (int c = 0; c < 3; ++c) {
+        double v;
+        if constexpr (kBytes == 4) {
+          float f;
+          std::memcpy(&f, b + offset[c], 4);
+          v = f;
+        } else {
+          std::memcpy(&v, b + offset[c], 8);
+        }
+        col[c][i] = v;
+        finite &= v - v == 0;  // false for NaN and infinities
+        lo[c] = std::min(lo[c], v);
+        hi[c] = std::max(hi[c], v);
+      }
+  };
+  if (single[0] && single[1] && single[2])
+    vertices(std::true_type{});
+  else if (!single[0] && !single[1] && !single[2])
+    vertices(std::false_type{});
+  else
+    return false;                     // mixed float and double coordinates: the general reader
+  constexpr double kMaxSpan = 1e150;  // validate_mesh's bound (src/mesh.cpp)
+  if (!finite || !(hi[0] - lo[0] <= kMaxSpan && hi[1] - lo[1] <= kMaxSpan && hi[2] - lo[2] <= kMaxSpan)) return false;
+  mesh.F.resize(static_cast<Eigen::Index>(nf), 3);
+  int* const f0 = mesh.F.data();
+  int* const f1 = f0 + nf;
+  int* const f2 = f1 + nf;
+  const auto n = static_cast<std::uint32_t>(nv);
+  bool bad = false;
+  for (std::size_t f = 0; f < nf; ++f, b += kFaceRecord) {
+    std::uint32_t i[3];
+    std::memcpy(i, b + 1, 12);
+    bad |= (static_cast<unsigned char>(b[0]) != 3) | (i[0] >= n) | (i[1] >= n) | (i[2] >= n) | (i[0] == i[1]) |
+           (i[1] == i[2]) | (i[0] == i[2]);
+    f0[f] = static_cast<int>(i[0]);
+    f1[f] = static_cast<int>(i[1]);
+    f2[f] = static_cast<int>(i[2]);
+  }
+  if (bad) return false;
+  if (single[0]) mesh.position_type = ScalarType::Float32;
+  soup.mesh = std::move(mesh);
+  soup.direct = true;
+  return true;
+}
+
 }  // namespace
 
 void read_ply(const std::string& path, std::string_view data, Soup& soup) {
   data = without_utf8_bom(data);
   const PlyHeader h = parse_ply_header(path, data);
   PlyBodyReader in(path, data, h);
+  if (read_binary_triangles(data, h, in.native(), soup)) return;
   bool all_uv = true, all_normals = true;
   bool float_positions = true;
   std::vector<std::string> dropped_face_properties, dropped_elements, dropped_vertex_lists;

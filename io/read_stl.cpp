@@ -7,12 +7,15 @@
 // ascii parse as binary, which "succeeds" on files shorter than 84 bytes.
 #include <CGAL/IO/STL.h>
 
+#include <algorithm>
 #include <cctype>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "msmesh/errors.h"
@@ -34,53 +37,111 @@ std::uint64_t point_hash(const float xyz[3]) {
   return h;
 }
 
-/// A binary STL of `triangles` triangles (the size already checked, little-endian floats):
-/// the points welded as CGAL's parse_binary_STL welds them (numbered on first appearance,
-/// equal when their coordinates compare equal), through an open-addressing hash table.
-void read_binary_stl(std::string_view data, std::uint32_t triangles, Soup& soup) {
-  soup.flat.corners.resize(3 * std::size_t(triangles));
-  soup.flat.start.resize(std::size_t(triangles) + 1);
-  for (std::size_t t = 0; t <= triangles; ++t) soup.flat.start[t] = 3 * t;
-  soup.points.reserve(triangles / 2 + 3);  // after welding a closed mesh has about F/2 vertices
-  std::vector<float> coords;               // the points as read (floats), 3 per point
-  coords.reserve(3 * (triangles / 2 + 3));
+/// A binary STL of `triangles` triangles (the size already checked, little-endian floats), read
+/// straight into the mesh (soup.mesh, soup.direct): the points welded as CGAL's
+/// parse_binary_STL welds them (numbered on first appearance, equal when their coordinates
+/// compare equal) through an open-addressing hash table, each corner's slot prefetched a few
+/// corners ahead (the table is larger than the caches: the loads overlap instead of queuing);
+/// triangles repeating a vertex after welding are left out and counted, as soup_to_mesh does.
+/// A non-finite coordinate is refused (CGAL merges through std::map<Point, int>, which NaN
+/// breaks), naming the first triangle that has one.
+void read_binary_stl(const std::string& path, std::string_view data, std::uint32_t triangles, Soup& soup) {
+  const std::size_t nt = triangles;
+  if (nt == 0) return;  // soup_to_mesh: "the file contains no vertices"
+  Mesh mesh;
+  mesh.F.resize(static_cast<Eigen::Index>(nt), 3);
+  int* const f0 = mesh.F.data();
+  int* const f1 = f0 + nt;
+  int* const f2 = f1 + nt;
+  std::vector<float> coords;         // the points as read (floats), 3 per point
+  coords.reserve(3 * (nt / 2 + 3));  // after welding a closed mesh has about F/2 vertices
   std::size_t mask = 1023;
-  while (mask + 1 < 2 * static_cast<std::size_t>(triangles / 2 + 3)) mask = 2 * mask + 1;
+  while (mask + 1 < 2 * (nt / 2 + 3)) mask = 2 * mask + 1;
   std::vector<std::uint32_t> slots(mask + 1, UINT32_MAX);  // point number, UINT32_MAX empty
   auto insert = [&](const float xyz[3], std::uint32_t id) {
     std::size_t s = point_hash(xyz) & mask;
     while (slots[s] != UINT32_MAX) s = (s + 1) & mask;
     slots[s] = id;
   };
-  const char* rec = data.data() + 84;
-  for (std::uint32_t t = 0; t < triangles; ++t, rec += 50) {
-    std::size_t* const poly = soup.flat.corners.data() + 3 * std::size_t(t);
-    for (int k = 0; k < 3; ++k) {
+  const char* const body = data.data() + 84;
+  auto corner = [body](std::size_t c) { return body + 50 * (c / 3) + 12 + 12 * (c % 3); };
+  // Two-stage prefetch: the slot of corner c + 2 * kAhead, then the point that slot holds (the
+  // comparison's load) for corner c + kAhead; the hashes wait in a ring.
+  constexpr std::size_t kAhead = 16, kRing = 64;
+  static_assert(kRing >= 2 * kAhead + 1 && (kRing & (kRing - 1)) == 0, "the ring holds the corners in flight");
+  std::uint64_t ring[kRing];
+  const std::size_t corners = 3 * nt;
+  auto hash_corner = [&](std::size_t c) {
+    float xyz[3];
+    std::memcpy(xyz, corner(c), 12);
+    return point_hash(xyz);
+  };
+  for (std::size_t c = 0; c < std::min(corners, 2 * kAhead); ++c) ring[c % kRing] = hash_corner(c);
+  std::size_t kept = 0, points = 0;
+  Eigen::Index dropped = 0;
+  for (std::size_t t = 0; t < nt; ++t) {
+    std::uint32_t id[3];
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::size_t c = 3 * t + k;
+      if (c + 2 * kAhead < corners) {
+        const std::uint64_t h = hash_corner(c + 2 * kAhead);
+        ring[(c + 2 * kAhead) % kRing] = h;
+        __builtin_prefetch(slots.data() + (h & mask));
+      }
+      if (c + kAhead < corners) {
+        const std::uint32_t first = slots[ring[(c + kAhead) % kRing] & mask];
+        if (first != UINT32_MAX) __builtin_prefetch(coords.data() + 3 * std::size_t(first));
+      }
       float xyz[3];
-      std::memcpy(xyz, rec + 12 + 12 * k, 12);
-      std::size_t s = point_hash(xyz) & mask;
-      std::uint32_t id = UINT32_MAX;
+      std::memcpy(xyz, corner(c), 12);
+      if (!(std::isfinite(xyz[0]) && std::isfinite(xyz[1]) && std::isfinite(xyz[2])))
+        throw IoError(path + ": triangle " + std::to_string(t) + " has a non-finite vertex coordinate");
+      std::size_t s = ring[c % kRing] & mask;
+      std::uint32_t found = UINT32_MAX;
       for (; slots[s] != UINT32_MAX; s = (s + 1) & mask) {
         const float* q = coords.data() + 3 * std::size_t(slots[s]);
         if (q[0] == xyz[0] && q[1] == xyz[1] && q[2] == xyz[2]) {
-          id = slots[s];
+          found = slots[s];
           break;
         }
       }
-      if (id == UINT32_MAX) {
-        id = static_cast<std::uint32_t>(soup.points.size());
-        slots[s] = id;
+      if (found == UINT32_MAX) {
+        if (points == static_cast<std::size_t>(INT_MAX))
+          throw IoError(path + ": too many vertices (more than " + std::to_string(INT_MAX) + ")");
+        found = static_cast<std::uint32_t>(points++);
+        slots[s] = found;
         coords.insert(coords.end(), xyz, xyz + 3);
-        soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);
-        if (2 * soup.points.size() > mask) {  // keep the load under one half
+        if (2 * points > mask) {  // keep the load under one half
           mask = 2 * mask + 1;
           slots.assign(mask + 1, UINT32_MAX);
-          for (std::uint32_t i = 0; i < soup.points.size(); ++i) insert(coords.data() + 3 * std::size_t(i), i);
+          for (std::uint32_t i = 0; i < points; ++i) insert(coords.data() + 3 * std::size_t(i), i);
         }
       }
-      poly[k] = id;
+      id[k] = found;
     }
+    if (id[0] == id[1] || id[1] == id[2] || id[0] == id[2]) {
+      ++dropped;
+      continue;
+    }
+    f0[kept] = static_cast<int>(id[0]);
+    f1[kept] = static_cast<int>(id[1]);
+    f2[kept] = static_cast<int>(id[2]);
+    ++kept;
   }
+  if (kept == 0) throw IoError(path + ": all " + std::to_string(dropped) + " faces are degenerate (repeat a vertex)");
+  if (kept < nt) mesh.F.conservativeResize(static_cast<Eigen::Index>(kept), 3);
+  mesh.V.resize(static_cast<Eigen::Index>(points), 3);
+  double* const x = mesh.V.data();
+  double* const y = x + points;
+  double* const z = y + points;
+  for (std::size_t i = 0; i < points; ++i) {
+    x[i] = coords[3 * i];
+    y[i] = coords[3 * i + 1];
+    z[i] = coords[3 * i + 2];
+  }
+  soup.mesh = std::move(mesh);
+  soup.direct_dropped = dropped;
+  soup.direct = true;
 }
 
 }  // namespace
@@ -111,16 +172,8 @@ void read_stl(const std::string& path, std::string_view data, Soup& soup) {
                   " bytes), the file has " + std::to_string(data.size()) + " bytes");
   }
   if (binary) {
-    // CGAL merges equal points through std::map<Point, int>; NaN breaks its ordering.
-    for (std::uint32_t t = 0; t < triangles; ++t)
-      for (int c = 3; c < 12; ++c) {
-        float x;
-        std::memcpy(&x, data.data() + 84 + 50 * std::size_t(t) + 4 * c, 4);
-        if (!std::isfinite(x))
-          throw IoError(path + ": triangle " + std::to_string(t) + " has a non-finite vertex coordinate");
-      }
     // (Many exporters start binary headers with "solid": the size decides, as above.)
-    read_binary_stl(data, triangles, soup);
+    read_binary_stl(path, data, triangles, soup);
     return;
   }
   if (!binary && data.find("endsolid") == std::string_view::npos)

@@ -21,7 +21,9 @@
 #include "../fuzz/mesh_check.h"
 #include "bad_files.h"
 #include "msmesh/errors.h"
+#include "msmesh/mesh_format.h"
 #include "msmesh/read_mesh.h"
+#include "msmesh/shapes.h"
 #include "msmesh/write_mesh.h"
 #include "test_helpers.h"
 
@@ -140,6 +142,176 @@ TEST(IoRead, BinaryStlWhoseHeaderStartsWithSolid) {
   const Mesh m = read_mesh(path);
   EXPECT_EQ(m.V.rows(), 4);
   EXPECT_EQ(m.F.rows(), 2);
+}
+
+// Binary PLY files of triangles are read straight into the mesh (read_ply.cpp
+// read_binary_triangles); any other layout goes through the general reader. The same body under
+// a header with one more (empty) element takes the general reader: both must give the same mesh,
+// notes and errors.
+namespace {
+
+/// A binary little-endian PLY of x, y, z (float or double) and faces (uchar count, int indices),
+/// with `extra_header` lines added after the face element.
+std::string binary_ply(const std::vector<std::array<double, 3>>& points, const std::vector<std::vector<int>>& faces,
+                       bool single, const std::string& extra_header = "") {
+  const char* t = single ? "float" : "double";
+  std::string s = "ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(points.size()) +
+                  "\nproperty " + t + " x\nproperty " + t + " y\nproperty " + t + " z\nelement face " +
+                  std::to_string(faces.size()) + "\nproperty list uchar int vertex_indices\n" + extra_header +
+                  "end_header\n";
+  for (const auto& p : points)
+    for (double x : p) {
+      if (single) {
+        s += le_float(static_cast<float>(x));
+      } else {
+        char b[8];
+        std::memcpy(b, &x, 8);
+        s.append(b, 8);
+      }
+    }
+  for (const auto& f : faces) {
+    s += static_cast<char>(f.size());
+    for (int i : f) s += le32(static_cast<std::uint32_t>(i));
+  }
+  return s;
+}
+
+/// What read_mesh_from_memory gives for `bytes`: the mesh and notes, or the error message.
+struct ReadResult {
+  Mesh mesh;
+  ReadNotes notes;
+  std::string error;
+};
+ReadResult read_ply_bytes(const std::string& bytes, const std::string& path) {
+  ReadResult r;
+  try {
+    r.mesh = read_mesh_from_memory(bytes, "ply", path, r.notes);
+  } catch (const IoError& e) {
+    r.error = e.what();
+  }
+  return r;
+}
+
+void expect_same_read(const ReadResult& a, const ReadResult& b) {
+  EXPECT_EQ(a.error, b.error);
+  ASSERT_EQ(a.mesh.V.rows(), b.mesh.V.rows());
+  ASSERT_EQ(a.mesh.F.rows(), b.mesh.F.rows());
+  EXPECT_TRUE(a.mesh.V == b.mesh.V);
+  EXPECT_TRUE(a.mesh.F == b.mesh.F);
+  EXPECT_EQ(a.mesh.position_type, b.mesh.position_type);
+  EXPECT_EQ(a.notes.dropped_degenerate, b.notes.dropped_degenerate);
+  EXPECT_EQ(a.notes.dropped, b.notes.dropped);
+  EXPECT_EQ(a.notes.had_normals, b.notes.had_normals);
+  EXPECT_EQ(a.mesh.vertex_colors.size() + a.mesh.vertex_normals.size() + a.mesh.uv.size(), 0);
+  EXPECT_TRUE(a.mesh.vertex_properties.empty());
+}
+
+}  // namespace
+
+TEST(ReadBinaryPly, TrianglesReadStraightIntoTheMeshAsTheGeneralReaderReadsThem) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<std::array<double, 3>> square = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0.1, 0.7, -0.25}};
+  const std::vector<std::vector<int>> two = {{0, 1, 2}, {0, 2, 3}};
+  struct Case {
+    const char* what;
+    std::vector<std::array<double, 3>> points;
+    std::vector<std::vector<int>> faces;
+    std::string expected_error;  // "" when the file reads
+  };
+  const Case cases[] = {
+      {"triangles", square, two, ""},
+      {"a quad", square, {{0, 1, 2, 3}}, ""},
+      {"a triangle repeating a vertex", square, {{0, 1, 2}, {0, 2, 2}, {0, 2, 3}}, ""},
+      {"an index past the end", square, {{0, 1, 2}, {0, 2, 4}}, "face 1 refers to vertex 4 (0-based), out of range"},
+      {"a negative index", square, {{0, 1, 2}, {-1, 2, 3}}, "face 1 refers to vertex -1"},
+      {"a NaN coordinate", {{0, 0, 0}, {nan, 0, 0}, {1, 1, 0}}, {{0, 1, 2}}, "vertex 1 has a non-finite coordinate"},
+      {"an infinite coordinate",
+       {{0, 0, 0}, {0, std::numeric_limits<double>::infinity(), 0}, {1, 1, 0}},
+       {{0, 1, 2}},
+       "non-finite"},
+      {"coordinates spanning more than 1e150", {{0, 0, 0}, {1e200, 0, 0}, {1, 1, 0}}, {{0, 1, 2}}, "more than 1e150"},
+      {"only degenerate faces", square, {{0, 1, 1}}, "all 1 faces are degenerate"},
+  };
+  for (const Case& c : cases)
+    for (bool single : {true, false}) {
+      if (single && std::string(c.what).find("1e150") != std::string::npos) continue;  // no float holds 1e200
+      SCOPED_TRACE(std::string(c.what) + (single ? " (float)" : " (double)"));
+      const ReadResult direct = read_ply_bytes(binary_ply(c.points, c.faces, single), "direct.ply");
+      ReadResult general = read_ply_bytes(binary_ply(c.points, c.faces, single, "element unused 0\n"), "direct.ply");
+      expect_same_read(direct, general);
+      if (c.expected_error.empty()) {
+        EXPECT_EQ(direct.error, "");
+        EXPECT_EQ(direct.mesh.V.rows(), static_cast<Eigen::Index>(c.points.size()));
+        EXPECT_EQ(direct.mesh.position_type, single ? ScalarType::Float32 : ScalarType::Float64);
+      } else {
+        EXPECT_NE(direct.error.find("direct.ply: "), std::string::npos) << direct.error;
+        EXPECT_NE(direct.error.find(c.expected_error), std::string::npos) << direct.error;
+      }
+    }
+  const ReadResult r = read_ply_bytes(binary_ply(square, two, false), "direct.ply");
+  ASSERT_EQ(r.mesh.F.rows(), 2);
+  EXPECT_EQ(r.mesh.V(3, 0), 0.1);
+  EXPECT_EQ(r.mesh.V(3, 1), 0.7);
+  EXPECT_EQ(r.mesh.V(3, 2), -0.25);
+  EXPECT_EQ(r.mesh.F(1, 0), 0);
+  EXPECT_EQ(r.mesh.F(1, 1), 2);
+  EXPECT_EQ(r.mesh.F(1, 2), 3);
+}
+
+TEST(ReadBinaryStl, WeldsInFirstAppearanceOrderAndDropsTrianglesRepeatingAVertex) {
+  TempDir dir;
+  // -0 and +0 are one vertex; the third triangle collapses to two vertices after welding.
+  const std::string path = dir.file("weld.stl");
+  write_bytes(
+      path,
+      binary_stl({{1, 0, 0, 0, 0, 0, 0, 1, 0}, {-0.f, 0, 0, 1, 0, 0, 1, 1, 0.5f}, {1, 0, 0, 1, 1, 0.5f, 1, 0, -0.f}}));
+  ReadNotes notes;
+  const Mesh m = read_mesh(path, notes);
+  ASSERT_EQ(m.V.rows(), 4);
+  ASSERT_EQ(m.F.rows(), 2);
+  EXPECT_EQ(notes.dropped_degenerate, 1);
+  EXPECT_EQ(m.V(0, 0), 1.0);
+  EXPECT_EQ(m.V(1, 0), 0.0);
+  EXPECT_EQ(m.V(2, 1), 1.0);
+  EXPECT_EQ(m.V(3, 2), 0.5);
+  EXPECT_EQ(m.F(0, 0), 0);
+  EXPECT_EQ(m.F(0, 1), 1);
+  EXPECT_EQ(m.F(0, 2), 2);
+  EXPECT_EQ(m.F(1, 0), 1);
+  EXPECT_EQ(m.F(1, 1), 0);
+  EXPECT_EQ(m.F(1, 2), 3);
+  write_bytes(dir.file("flat.stl"), binary_stl({{0, 0, 0, 1, 0, 0, 1, 0, 0}}));
+  expect_read_error(dir.file("flat.stl"), "all 1 faces are degenerate (repeat a vertex)");
+  const float inf = std::numeric_limits<float>::infinity();
+  write_bytes(dir.file("inf.stl"), binary_stl({{0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 0, 1, 0, 0, 0, inf, 0}}));
+  expect_read_error(dir.file("inf.stl"), "triangle 1 has a non-finite vertex coordinate");
+}
+
+TEST(ReadBinary, LargeFilesAreMappedAndReadAsFromMemory) {
+  // Files of 64 KB and more are mapped (read_mesh.cpp), smaller ones read into a buffer, as
+  // read_mesh_from_memory reads bytes: all three give the same mesh.
+  TempDir dir;
+  const Mesh sphere = make_sphere(4);  // 5120 faces: 128 KB of PLY, 256 KB of STL
+  for (const char* name : {"sphere.ply", "sphere.stl", "sphere.obj"}) {
+    SCOPED_TRACE(name);
+    const std::string path = dir.file(name);
+    WriteOptions options;
+    options.binary = true;
+    write_mesh(path, sphere, options);
+    const std::string bytes = read_bytes(path);
+    ASSERT_GE(bytes.size(), 65536u);
+    ReadNotes file_notes, memory_notes;
+    const Mesh from_file = read_mesh(path, file_notes);
+    const Mesh from_memory = read_mesh_from_memory(bytes, mesh_format_from_path(path), path, memory_notes);
+    ASSERT_EQ(from_file.F.rows(), sphere.F.rows());
+    EXPECT_TRUE(from_file.V == from_memory.V);
+    EXPECT_TRUE(from_file.F == from_memory.F);
+    if (std::string(name) != "sphere.stl") {  // STL numbers the vertices by first appearance
+      EXPECT_TRUE(from_file.F == sphere.F);
+      EXPECT_LT((from_file.V - sphere.V).cwiseAbs().maxCoeff(), 1e-6);
+    }
+    EXPECT_EQ(file_notes.dropped, memory_notes.dropped);
+  }
 }
 
 TEST(IoRead, ObjRecordsOutsideTheSurfaceAreSkipped) {
