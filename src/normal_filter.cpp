@@ -214,6 +214,7 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
 
   // The iterates, row-major (one row per face or edge) and allocated once.
   N0r_ = detail::to_rows(N0_);
+  if (!o.record_energy) N0_ = Eigen::MatrixXd();  // only the energy reads the column-major copy
   N_ = N0r_;
   N_prev_.resize(nf_, 3);
   N_next_.resize(nf_, 3);
