@@ -4,6 +4,7 @@
 #include <exception>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
@@ -202,16 +203,18 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
   // changes between iterations. Dᵀ L_W D is assembled directly from the corner lines (each
   // line l couples its entering and leaving edges), stored with explicit diagonal entries.
   {
-    const SparseMatrix Kv = edge_smoothness_matrix(topo_, ops_.line_lengths, 2.0 * o.beta * o.epsilon);
+    SparseMatrix Kv = edge_smoothness_matrix(topo_, ops_.line_lengths, 2.0 * o.beta * o.epsilon);
     smooth_diag_ = Kv.diagonal();
-    // Few sweeps per solve (strongly diagonally dominant): not worth a reordering.
-    v_system_.emplace(Kv, /*reorder=*/false);
+    // Few sweeps per solve (strongly diagonally dominant): not worth a reordering. CG takes
+    // the matrix over (the largest array here: ~120 MB at a million faces, not copied).
+    v_system_.emplace(std::move(Kv), /*reorder=*/false);
   }
   v_rhs_ = ops_.edge_lengths.cwiseProduct(edge_beta_) * (o.beta / (2 * o.epsilon));
   v_diag_.resize(ne_);
 
   // The iterates, row-major (one row per face or edge) and allocated once.
   N0r_ = detail::to_rows(N0_);
+  if (!o.record_energy) N0_ = Eigen::MatrixXd();  // only the energy reads the column-major copy
   N_ = N0r_;
   N_prev_.resize(nf_, 3);
   N_next_.resize(nf_, 3);

@@ -34,6 +34,10 @@ class BlockPcg {
   /// stored. `reorder`: work in reverse Cuthill–McKee order (pays off over many sweeps; costs
   /// a permutation of B and X per solve).
   explicit BlockPcg(const Eigen::SparseMatrix<double>& A, bool reorder = true);
+  /// The same, taking over A's arrays when there is no reordering and A is compressed with
+  /// its columns sorted within each row (no copy of the matrix: the v-step's is the largest
+  /// array of the normal filter); otherwise as above.
+  explicit BlockPcg(Eigen::SparseMatrix<double>&& A, bool reorder);
   /// Replaces the diagonal of A by d (#rows, original order).
   void set_diagonal(const Eigen::VectorXd& d);
   /// Solves A X = B (n by 3) in place, X holding the warm start. Stops when every column's
@@ -54,9 +58,11 @@ class BlockPcg {
   template <int K>
   PcgStats solve_permuted(const double* B, double* X, double relative_tolerance, int max_iterations,
                           const std::string& what) const;
-  std::vector<int> perm_;      // reverse Cuthill–McKee: position i holds original row perm_[i]; empty: none
-  std::vector<int> diag_pos_;  // index of row i's diagonal entry in A_'s values
-  RowSparse A_;                // P A Pᵀ
+  void init(const Eigen::SparseMatrix<double>& A, bool reorder);
+  void find_diagonal();
+  std::vector<int> perm_;          // reverse Cuthill–McKee: position i holds original row perm_[i]; empty: none
+  std::vector<int> diag_pos_;      // index of row i's diagonal entry in A_'s values
+  Eigen::SparseMatrix<double> A_;  // P A Pᵀ; symmetric, so its columns are read as its rows
   Eigen::VectorXd inv_diag_;
   Eigen::Index bad_row_ = -1;  // a row (original order) whose diagonal is not positive, or -1
   double bad_value_ = 0;
