@@ -44,11 +44,13 @@ constexpr double kFairnessFrom = 0.1, kFairnessSpan = 0.3, kFairnessMinShare = 0
 //   closeness to the input is a Gaussian-likelihood weight, ∝ 1/σ², so below σ 0.13 it grows and
 //   the vertex update keeps the detail a nearly clean input still has (up to 3×, reached at σ 0.075).
 constexpr double kClosenessSigma = 0.13, kClosenessMaxGain = 3.0;
-//   Impulsive noise: when more than kDespikeFromOutliers of the vertices are outliers of the noise
-//   estimate (beyond 4 robust σ; Gaussian noise: well under 1 % on every public mesh, 20 % spikes:
-//   4–10 %), the spikes are first moved onto a low-pass copy (despike.h) at kDespikeThreshold
-//   robust σ, and the rules above take σ from the despiked mesh (docs/presets.md, "Impulsive noise").
-constexpr double kDespikeFromOutliers = 0.03, kDespikeThreshold = 3.0;
+//   Impulsive noise: when at least kDespikeFromOutliers of the vertices are outliers of the noise
+//   estimate (beyond 4 robust σ) and σ_rms is at least kDespikeFromSigmaRms, the spikes are first
+//   moved onto a low-pass copy (despike.h) at kDespikeThreshold robust σ, and the rules above take σ
+//   from the despiked mesh (docs/presets.md, "Impulsive noise"). Measured on the sweep: 20 % spikes
+//   read 4–9 % outliers and σ_rms >= 0.217; the outliers of low-noise CAD parts (3–9 %, σ_rms up to
+//   0.13; a clean coarse fandisk: 0.18) are their creases, which despiking would round off.
+constexpr double kDespikeFromOutliers = 0.03, kDespikeFromSigmaRms = 0.2, kDespikeThreshold = 3.0;
 
 // Meshes above kSampleAboveFaces faces are measured on kSamplePatches patches of
 // kSamplePatchFaces faces, away from the cuts by kSampleMargin rings (about as far as the
@@ -172,7 +174,8 @@ std::string ResolvedPreset::reason() const {
                                                : "";
   const std::string spikes = despiked
                                  ? ", outliers >= " + fixed(100 * kDespikeFromOutliers, 0) +
-                                       " %: " + fixed(100 * despiked_fraction, 1) + " % of the vertices despiked at " +
+                                       " % and rms >= " + fixed(kDespikeFromSigmaRms, 2) + ": " +
+                                       fixed(100 * despiked_fraction, 1) + " % of the vertices despiked at " +
                                        fixed(options.despike_threshold, 1) + " sigma, then " + noise_despiked.summary()
                                  : "";
   return "chosen automatically (" + sampled + noise.summary() + spikes + s + ": alpha " +
@@ -217,7 +220,7 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   r.noise = detail::estimate_noise_masked(SV, SF, core_vertices);
   // Impulsive noise: the spikes are removed first, and everything after is measured on the
   // despiked mesh, as denoise() will see it.
-  r.despiked = r.noise.outlier_fraction >= kDespikeFromOutliers;
+  r.despiked = r.noise.outlier_fraction >= kDespikeFromOutliers && r.noise.sigma_rms >= kDespikeFromSigmaRms;
   DespikeResult spikes;
   if (r.despiked) {
     spikes = despike(SV, SF, kDespikeThreshold);
