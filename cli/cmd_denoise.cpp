@@ -123,7 +123,9 @@ void run(const Args& a) {
           .add("noise_sigma", preset.noise.sigma)
           .add("noise_sigma_rms", preset.noise.sigma_rms)
           .add("noise_outlier_fraction", preset.noise.outlier_fraction)
-          .add("noise_level_used", preset.sigma);
+          .add("noise_level_used", preset.sigma)
+          .add("noise_despiked", preset.despiked)
+          .add("noise_sigma_rms_despiked", preset.noise_despiked.sigma_rms);
     j.add("strength", preset.strength);
     j.add("vertices", static_cast<long long>(mesh.V.rows())).add("faces", static_cast<long long>(mesh.F.rows()));
     j.add("dropped_degenerate_faces", static_cast<long long>(notes.dropped_degenerate));
@@ -140,6 +142,7 @@ void run(const Args& a) {
         .add("seconds_write", t_write)
         .add("threads", threads());
     j.add("normal_iterations", r.normal_report.iterations).add("vertex_iterations", r.vertex_report.iterations);
+    j.add("despiked_vertices", static_cast<long long>(r.despiked_vertices));
     j.add("n_step_cg_sweeps", r.normal_report.n_solver_iterations)
         .add("v_step_cg_sweeps", r.vertex_report.solver_iterations);
     j.add("residual_history", r.normal_report.residual_history);
@@ -177,6 +180,8 @@ void run(const Args& a) {
   }
   std::cout << "\n";
   if (o.method != DenoiseMethod::Bilateral) {
+    if (o.despike_threshold > 0)
+      std::cout << "  spikes:           " << r.despiked_vertices << " vertices moved onto the low-pass surface\n";
     std::cout << "  normal filtering: " << r.normal_report.iterations << " iterations, " << fmt(r.seconds_normals, 3)
               << " s, residual |p - grad N| "
               << fmt(r.normal_report.residual_history.empty() ? 0.0 : r.normal_report.residual_history.back()) << "\n";

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "msmesh/despike.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/memory.h"
@@ -90,6 +91,7 @@ void DenoiseOptions::validate() const {
     normals.validate();
     vertices.validate();
     check_parameter(find_parameter(denoise_parameters(), "prefilter")->info, prefilter_iterations);
+    check_parameter(find_parameter(denoise_parameters(), "despike")->info, despike_threshold);
   }
 }
 
@@ -136,6 +138,7 @@ DenoiseResult denoise_components(const Eigen::MatrixXd& V, const Eigen::MatrixXi
     }
     r.seconds_normals += rc.seconds_normals;
     r.seconds_vertices += rc.seconds_vertices;
+    r.despiked_vertices += rc.despiked_vertices;
   }
   return r;
 }
@@ -168,8 +171,11 @@ DenoiseResult denoise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
     r.seconds_vertices = std::chrono::duration<double>(clock::now() - t1).count();
     return r;
   }
+  DespikeResult spikes;
+  if (o.despike_threshold > 0) spikes = despike(V, F, o.despike_threshold);
   // Checked, normalised and connected once for both stages.
-  const PreparedMesh mesh(V, F, "denoise");
+  const PreparedMesh mesh(o.despike_threshold > 0 ? spikes.V : V, F, "denoise");
+  r.despiked_vertices = spikes.moved;
   NormalFilterOptions no = o.normals;
   no.reweight = (o.method == DenoiseMethod::NMSTV);
   Eigen::MatrixXd normals0;  // empty: the input's face normals

@@ -5,10 +5,9 @@
 #include <sstream>
 #include <vector>
 
+#include "low_pass_residuals.h"
 #include "masked_measures.h"
-#include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
-#include "msmesh/taubin.h"
 
 namespace msmesh {
 
@@ -17,16 +16,7 @@ namespace {
 // The MAD of the residuals to Taubin x10 is this fraction of the seeded σ (Gaussian noise along
 // the normals, σ 0.1 to 0.7, the public clean meshes: 0.83 to 0.92; docs/presets.md).
 constexpr double kCalibration = 0.87;
-constexpr double kMadToSigma = 1.4826;  // σ of a Gaussian / its median absolute deviation
 constexpr double kOutlierSigmas = 4.0;
-constexpr int kLowPassIterations = 10;
-
-double median(std::vector<double> x) {
-  if (x.empty()) return 0;
-  const auto mid = x.begin() + static_cast<std::ptrdiff_t>(x.size() / 2);
-  std::nth_element(x.begin(), mid, x.end());
-  return *mid;
-}
 
 }  // namespace
 
@@ -49,28 +39,23 @@ NoiseEstimate detail::estimate_noise_masked(const Eigen::MatrixXd& V, const Eige
                                             const std::vector<char>* measured) {
   NoiseEstimate e;
   if (F.rows() == 0) return e;
-  TaubinOptions to;
-  to.iterations = kLowPassIterations;
-  const Eigen::MatrixXd S = taubin_smooth(V, F, to);
-  const Eigen::MatrixXd N = vertex_normals(S, F);
-  const double scale = mean_edge_length(S, F);
+  const detail::LowPassResiduals lp = detail::low_pass_residuals(V, F);
+  const double scale = lp.mean_edge;
   if (!(scale > 0)) return e;
-  std::vector<bool> used(static_cast<std::size_t>(V.rows()), false);
-  for (Eigen::Index i = 0; i < F.size(); ++i) used[static_cast<std::size_t>(F.data()[i])] = true;
   std::vector<double> d;
   d.reserve(static_cast<std::size_t>(V.rows()));
   for (Eigen::Index i = 0; i < V.rows(); ++i)
-    if (used[static_cast<std::size_t>(i)] && (!measured || (*measured)[static_cast<std::size_t>(i)]))
-      d.push_back((V.row(i) - S.row(i)).dot(N.row(i)) / scale);
+    if (lp.used[static_cast<std::size_t>(i)] && (!measured || (*measured)[static_cast<std::size_t>(i)]))
+      d.push_back(lp.residual(i) / scale);
   if (d.empty()) return e;
-  const double m = median(d);
+  const double m = detail::median_of(d);
   std::vector<double> a(d.size());
   double sum2 = 0;
   for (std::size_t i = 0; i < d.size(); ++i) {
     a[i] = std::abs(d[i] - m);
     sum2 += a[i] * a[i];
   }
-  const double mad = kMadToSigma * median(a);
+  const double mad = detail::kMadToSigma * detail::median_of(a);
   e.sigma = mad / kCalibration;
   e.sigma_rms = std::sqrt(sum2 / static_cast<double>(d.size())) / kCalibration;
   std::size_t outliers = 0;

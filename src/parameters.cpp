@@ -256,6 +256,11 @@ const ParameterTable<DenoiseOptions>& denoise_parameters() {
                               "(robust first normals under heavy noise; 0: the input's face normals, as the paper)",
                               kNormals),
                       &O::prefilter_iterations));
+    t.push_back(field(real("despike", "", "robust σ", non_negative(),
+                           "move vertices farther than this many robust σ from a low-pass copy onto it before "
+                           "anything else (impulsive outliers; 0: off, as the paper)",
+                           kNormals),
+                      &O::despike_threshold));
     t.push_back(shared_solver_tolerance<O>());
     return t;
   }();

@@ -105,6 +105,28 @@ TEST(Presets, AutoChoosesFromTheMeshAndSaysWhy) {
   EXPECT_EQ(asked.reason(), "requested");
 }
 
+TEST(Presets, AutoRemovesSpikesUnderImpulsiveNoiseOnly) {
+  const Mesh sphere = make_shape("sphere", 16);
+  NoiseOptions no;
+  no.sigma = 0.5;
+  no.seed = 9;
+  const Eigen::MatrixXd gauss = add_noise(sphere.V, sphere.F, no);
+  no.impulsive_fraction = 0.2;
+  const Eigen::MatrixXd spiky = add_noise(sphere.V, sphere.F, no);
+  const ResolvedPreset g = resolve_preset("auto", gauss, sphere.F);
+  EXPECT_FALSE(g.despiked);
+  EXPECT_EQ(g.options.despike_threshold, 0);
+  EXPECT_EQ(g.reason().find("despiked"), std::string::npos) << g.reason();
+  const ResolvedPreset s = resolve_preset("auto", spiky, sphere.F);
+  EXPECT_TRUE(s.despiked) << s.reason();
+  EXPECT_GT(s.options.despike_threshold, 0);
+  EXPECT_GT(s.despiked_fraction, 0.05);
+  // The rules take σ from the despiked mesh, which reads far less noisy than the spiky input.
+  EXPECT_LT(s.noise_despiked.sigma_rms, 0.7 * s.noise.sigma_rms);
+  EXPECT_EQ(s.sigma, s.noise_despiked.sigma_rms);
+  EXPECT_NE(s.reason().find("despiked at"), std::string::npos) << s.reason();
+}
+
 TEST(Presets, AdaptiveOptionsFollowTheNoise) {
   // Less fidelity and more pre-filtering as the noise grows; within the documented limits.
   double last_alpha = 1e300;

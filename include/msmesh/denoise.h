@@ -30,6 +30,11 @@ struct DenoiseOptions {
   /// stays close to, the input. 0: N⁰ are the input's face normals, as in the paper. The
   /// noise-adaptive preset "auto" sets it from the noise estimate (presets.h).
   int prefilter_iterations = 0;
+  /// Impulsive outliers (NMSTV/MSTV): when > 0, vertices farther than this many robust σ from a
+  /// low-pass copy are first moved onto it (despike.h), and everything after works on that mesh
+  /// (the first normals and the closeness of the vertex update). 0: off, as in the paper. Preset
+  /// "auto" turns it on when the noise estimate finds many outliers (presets.h).
+  double despike_threshold = 0;
   void validate() const;
 };
 
@@ -41,6 +46,7 @@ struct DenoiseResult {
   NormalFilterStats normal_report;  ///< iterations and histories (NMSTV/MSTV)
   VertexUpdateStats vertex_report;  ///< iterations and histories
   double seconds_normals = 0, seconds_vertices = 0;
+  Eigen::Index despiked_vertices = 0;  ///< vertices moved by DenoiseOptions::despike_threshold
 };
 
 /// A lower estimate of the peak memory (bytes) denoise() needs for a mesh of this size,

@@ -59,9 +59,16 @@ struct ResolvedPreset {
   std::string preset;      ///< the preset whose values were used: "cad", "smooth" or "paper"
   bool automatic = false;  ///< requested == "auto"
   PresetChoice choice;     ///< what the shape rule saw (when automatic)
-  NoiseEstimate noise;     ///< the noise estimate (when automatic)
-  double strength = 1.0;   ///< how much to remove: 1 the default, larger smooths more
-  double sigma = 0;        ///< the noise level the rules used: strength × noise.sigma_rms (auto)
+  NoiseEstimate noise;     ///< the noise estimate of the input (when automatic)
+  /// Impulsive noise (auto): when the input's outlier fraction called for spike removal
+  /// (options.despike_threshold > 0), the estimate of the despiked mesh, from which the rules took
+  /// σ; the fraction of vertices the spike removal moved.
+  bool despiked = false;
+  NoiseEstimate noise_despiked;
+  double despiked_fraction = 0;
+  double strength = 1.0;  ///< how much to remove: 1 the default, larger smooths more
+  double sigma = 0;       ///< the noise level the rules used: strength × (despiked ? noise_despiked : noise).sigma_rms
+
   /// Large meshes (auto): the faces measured, the cores of sample_patches patches spread over
   /// the mesh (0: the whole mesh was measured).
   Eigen::Index sample_faces = 0, sample_patches = 0;

@@ -166,7 +166,14 @@ def _resolve_preset(V, F, preset, report, strength=1.0):
         report["auto_sharp_fraction"] = r["sharp_fraction"]
         report["auto_flat_fraction"] = r["flat_fraction"]
         report["auto_noise_level"] = r["noise_level"]
-        for key in ("noise_sigma", "noise_sigma_rms", "noise_outlier_fraction", "noise_level_used"):
+        for key in (
+            "noise_sigma",
+            "noise_sigma_rms",
+            "noise_outlier_fraction",
+            "noise_level_used",
+            "noise_despiked",
+            "noise_sigma_rms_despiked",
+        ):
             report[key] = r[key]
     report["strength"] = r["strength"]
     return r["options"]

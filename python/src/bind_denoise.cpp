@@ -35,6 +35,7 @@ py::dict denoise_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, con
   }
   d["seconds_normals"] = r.seconds_normals;
   d["seconds_vertices"] = r.seconds_vertices;
+  d["despiked_vertices"] = static_cast<long long>(r.despiked_vertices);
   return d;
 }
 

@@ -1,0 +1,31 @@
+#include "low_pass_residuals.h"
+
+#include <algorithm>
+
+#include "msmesh/geometry.h"
+#include "msmesh/taubin.h"
+
+namespace msmesh::detail {
+
+LowPassResiduals low_pass_residuals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
+  LowPassResiduals r;
+  TaubinOptions to;
+  to.iterations = kLowPassIterations;
+  r.smooth = taubin_smooth(V, F, to);
+  r.normals = vertex_normals(r.smooth, F);
+  r.mean_edge = mean_edge_length(r.smooth, F);
+  r.used.assign(static_cast<std::size_t>(V.rows()), false);
+  for (Eigen::Index i = 0; i < F.size(); ++i) r.used[static_cast<std::size_t>(F.data()[i])] = true;
+  r.residual.resize(V.rows());
+  for (Eigen::Index i = 0; i < V.rows(); ++i) r.residual(i) = (V.row(i) - r.smooth.row(i)).dot(r.normals.row(i));
+  return r;
+}
+
+double median_of(std::vector<double> x) {
+  if (x.empty()) return 0;
+  const auto mid = x.begin() + static_cast<std::ptrdiff_t>(x.size() / 2);
+  std::nth_element(x.begin(), mid, x.end());
+  return *mid;
+}
+
+}  // namespace msmesh::detail

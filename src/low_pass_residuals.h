@@ -1,0 +1,27 @@
+// Internal: each vertex's distance along the normal from a low-pass copy of the mesh, the
+// measurement behind the noise estimate (noise_estimate.h) and the spike removal (despike.h).
+#pragma once
+#include <Eigen/Core>
+#include <vector>
+
+namespace msmesh::detail {
+
+/// The low-pass copy (taubin_smooth, kLowPassIterations iterations), its vertex normals and the
+/// residuals (V − S)·N per vertex. `used` marks the vertices some face refers to.
+struct LowPassResiduals {
+  Eigen::MatrixXd smooth;    ///< #V by 3 low-pass positions
+  Eigen::MatrixXd normals;   ///< #V by 3 vertex normals of the low-pass copy
+  Eigen::VectorXd residual;  ///< #V signed distances along the normals, in the mesh's units
+  std::vector<bool> used;    ///< #V: referenced by a face
+  double mean_edge = 0;      ///< mean edge length of the low-pass copy
+};
+
+constexpr int kLowPassIterations = 10;
+constexpr double kMadToSigma = 1.4826;  // σ of a Gaussian / its median absolute deviation
+
+LowPassResiduals low_pass_residuals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F);
+
+/// The median of x (the upper one for an even count); 0 for none.
+double median_of(std::vector<double> x);
+
+}  // namespace msmesh::detail
