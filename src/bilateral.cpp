@@ -49,6 +49,18 @@ void face_vertex_neighbours(const Eigen::MatrixXi& F, Eigen::Index nv, std::vect
   }
 }
 
+/// out = s / |s|, or the face's own normal `own` where the weighted sum vanishes.
+inline void store_unit(double s0, double s1, double s2, const double* own, double* out) {
+  const double len = std::sqrt(s0 * s0 + s1 * s1 + s2 * s2);
+  if (len > 0) {
+    out[0] = s0 / len;
+    out[1] = s1 / len;
+    out[2] = s2 / len;
+  } else {
+    std::copy(own, own + 3, out);
+  }
+}
+
 }  // namespace
 
 Eigen::MatrixXd bilateral_filter_normals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const BilateralOptions& o,
@@ -94,17 +106,7 @@ Eigen::MatrixXd bilateral_filter_normals(const Eigen::MatrixXd& V, const Eigen::
         s1 += w * ng[1];
         s2 += w * ng[2];
       }
-      const double len = std::sqrt(s0 * s0 + s1 * s1 + s2 * s2);
-      double* out = Nn.data() + 3 * f;
-      if (len > 0) {
-        out[0] = s0 / len;
-        out[1] = s1 / len;
-        out[2] = s2 / len;
-      } else {
-        out[0] = nf3[0];
-        out[1] = nf3[1];
-        out[2] = nf3[2];
-      }
+      store_unit(s0, s1, s2, nf3, Nn.data() + 3 * f);
     }
     N.swap(Nn);
     if (progress && !progress({"bilateral normals", it + 1, o.normal_iterations, std::nan("")}))
@@ -181,15 +183,7 @@ Eigen::MatrixXd detail::bilateral_normals_by_pairs(const Eigen::MatrixXd& V, con
         s1 += w * ng[1];
         s2 += w * ng[2];
       }
-      const double len = std::sqrt(s0 * s0 + s1 * s1 + s2 * s2);
-      double* out = Nn.data() + 3 * f;
-      if (len > 0) {
-        out[0] = s0 / len;
-        out[1] = s1 / len;
-        out[2] = s2 / len;
-      } else {
-        std::copy(nf3, nf3 + 3, out);
-      }
+      store_unit(s0, s1, s2, nf3, Nn.data() + 3 * f);
     }
     N.swap(Nn);
   }
