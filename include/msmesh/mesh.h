@@ -40,8 +40,9 @@ struct VertexProperty {
 ///  - group_names, face_groups: OBJ `g` groups (glTF: one group per source primitive) and #F
 ///    indices into them (−1: none). object_names, face_objects: the same for OBJ `o` objects.
 ///  - vertex_properties: extra per-vertex scalars (PLY), each with #V values.
-///  - position_type: the scalar type of the file's coordinates (Float32 for a float PLY, a glTF
-///    or a binary STL); a writer that can choose stores them the same way.
+///  - position_type: the scalar type of the file's coordinates (Float32 for a float PLY or a
+///    glTF); a writer that can choose stores them the same way. An STL input keeps the default
+///    Float64 (STL itself can only store float).
 ///  - gltf_document: the source glTF document (a GLB in memory: materials, textures, images,
 ///    nodes, everything but the geometry that V and F replace), kept so that writing a glTF
 ///    gives back the same scene with the processed geometry. Shared, never modified.
