@@ -14,10 +14,13 @@ DespikeResult despike(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, double
   if (!(threshold > 0) || !std::isfinite(threshold))
     throw InvalidInput("despike: threshold must be a finite number > 0");
   validate_mesh(V, F, "despike");
+  if (F.rows() == 0) return DespikeResult{V, 0};
+  return detail::despike_from(V, detail::low_pass_residuals(V, F), threshold);
+}
+
+DespikeResult detail::despike_from(const Eigen::MatrixXd& V, const LowPassResiduals& lp, double threshold) {
   DespikeResult r;
   r.V = V;
-  if (F.rows() == 0) return r;
-  const detail::LowPassResiduals lp = detail::low_pass_residuals(V, F);
   std::vector<double> d;
   d.reserve(static_cast<std::size_t>(V.rows()));
   for (Eigen::Index i = 0; i < V.rows(); ++i)

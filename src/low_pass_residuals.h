@@ -4,6 +4,8 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "msmesh/despike.h"
+
 namespace msmesh::detail {
 
 /// The low-pass copy (taubin_smooth, kLowPassIterations iterations), its vertex normals and the
@@ -20,6 +22,10 @@ constexpr int kLowPassIterations = 10;
 constexpr double kMadToSigma = 1.4826;  // σ of a Gaussian / its median absolute deviation
 
 LowPassResiduals low_pass_residuals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F);
+
+/// despike() on residuals already computed from V (low_pass_residuals(V, F)): the same result,
+/// without a second low pass when the noise estimate has just measured the same mesh.
+DespikeResult despike_from(const Eigen::MatrixXd& V, const LowPassResiduals& lp, double threshold);
 
 /// The median of x (the upper one for an even count); 0 for none.
 double median_of(std::vector<double> x);

@@ -37,14 +37,17 @@ NoiseEstimate estimate_noise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F)
 
 NoiseEstimate detail::estimate_noise_masked(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
                                             const std::vector<char>* measured) {
+  if (F.rows() == 0) return NoiseEstimate{};
+  return estimate_noise_from(detail::low_pass_residuals(V, F), measured);
+}
+
+NoiseEstimate detail::estimate_noise_from(const LowPassResiduals& lp, const std::vector<char>* measured) {
   NoiseEstimate e;
-  if (F.rows() == 0) return e;
-  const detail::LowPassResiduals lp = detail::low_pass_residuals(V, F);
   const double scale = lp.mean_edge;
   if (!(scale > 0)) return e;
   std::vector<double> d;
-  d.reserve(static_cast<std::size_t>(V.rows()));
-  for (Eigen::Index i = 0; i < V.rows(); ++i)
+  d.reserve(lp.used.size());
+  for (Eigen::Index i = 0; i < lp.residual.size(); ++i)
     if (lp.used[static_cast<std::size_t>(i)] && (!measured || (*measured)[static_cast<std::size_t>(i)]))
       d.push_back(lp.residual(i) / scale);
   if (d.empty()) return e;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "bilateral_pairs.h"
+#include "low_pass_residuals.h"
 #include "masked_measures.h"
 #include "msmesh/bilateral.h"
 #include "msmesh/despike.h"
@@ -218,13 +219,15 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   const Eigen::MatrixXd& SV = sampled ? sample.mesh.V : V;
   const Eigen::MatrixXi& SF = sampled ? sample.mesh.F : F;
   const std::vector<char>* core_vertices = sampled ? &sample.core_vertex : nullptr;
-  r.noise = detail::estimate_noise_masked(SV, SF, core_vertices);
+  // One low pass serves the noise estimate and, under impulsive noise, the spike removal.
+  const detail::LowPassResiduals low_pass = detail::low_pass_residuals(SV, SF);
+  r.noise = detail::estimate_noise_from(low_pass, core_vertices);
   // Impulsive noise: the spikes are removed first, and everything after is measured on the
   // despiked mesh, as denoise() will see it.
   r.despiked = r.noise.outlier_fraction >= kDespikeFromOutliers && r.noise.sigma_rms >= kDespikeFromSigmaRms;
   DespikeResult spikes;
   if (r.despiked) {
-    spikes = despike(SV, SF, kDespikeThreshold);
+    spikes = detail::despike_from(SV, low_pass, kDespikeThreshold);
     r.despiked_fraction = static_cast<double>(spikes.moved) / static_cast<double>(std::max<Eigen::Index>(1, SV.rows()));
     r.noise_despiked = detail::estimate_noise_masked(spikes.V, SF, core_vertices);
   }
