@@ -162,6 +162,8 @@ class NormalFilterRun {
   int v_step();
   void v_step_beside_next_n_step(bool last, int& v_iterations);
   bool overlap() const;
+  void renumber_faces();
+  Eigen::MatrixXd in_input_order(const Rows& M) const;
 
   const NormalFilterOptions& o_;
   const Eigen::MatrixXi& F_;
@@ -175,6 +177,14 @@ class NormalFilterRun {
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> gt_weight_;  // Gᵀ L per face
   Eigen::VectorXd smooth_diag_, v_rhs_, v_diag_;  // diagonal of 2βε Dᵀ L_W D; the v-step's b and diagonal
   std::optional<detail::BlockPcg> v_system_;      // the v-step matrix; its diagonal is set per iteration
+  // The faces are renumbered once into the N-step solver's order (reverse Cuthill–McKee for
+  // CG, pcg.h; the input order otherwise): the per-face arrays below, N-step matrix and
+  // iterates all use it, so CG needs no permutation per solve and the passes over faces and
+  // edges read neighbouring faces close together. Position i holds input face order_[i].
+  std::vector<int> order_;
+  Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor> face_edges_;  // per face (new order)
+  Eigen::Matrix<int, Eigen::Dynamic, 2, Eigen::RowMajor> edge_faces_;  // new face numbers; −1: none
+  Eigen::VectorXd area_;                                               // face areas (new order)
   Rows N0r_, N_, N_prev_, N_next_, rhs_, q_, lambda_;
   Eigen::VectorXd v_, w_;
   NormalFilterResult res_;
@@ -215,6 +225,7 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
   // The iterates, row-major (one row per face or edge) and allocated once.
   N0r_ = detail::to_rows(N0_);
   if (!o.record_energy) N0_ = Eigen::MatrixXd();  // only the energy reads the column-major copy
+  renumber_faces();
   N_ = N0r_;
   N_prev_.resize(nf_, 3);
   N_next_.resize(nf_, 3);
@@ -273,12 +284,55 @@ void NormalFilterRun::assemble_n_step() {
     }
 }
 
+// Puts the per-face arrays into the N-step solver's order (order_), with the face numbers of
+// the edges to match.
+void NormalFilterRun::renumber_faces() {
+  order_ = n_system_->order();
+  const bool same = order_.empty();
+  auto old_face = [&](Eigen::Index i) { return same ? i : static_cast<Eigen::Index>(order_[static_cast<size_t>(i)]); };
+  std::vector<int> new_face;
+  if (!same) {
+    new_face.resize(static_cast<size_t>(nf_));
+    for (Eigen::Index i = 0; i < nf_; ++i) new_face[static_cast<size_t>(order_[static_cast<size_t>(i)])] = static_cast<int>(i);
+  }
+  face_edges_.resize(nf_, 3);
+  area_.resize(nf_);
+  Eigen::VectorXd fid(nf_);
+  Rows gt(nf_, 3), n0(nf_, 3);
+  detail::parallel_for(nf_, [&](Eigen::Index i) {
+    const Eigen::Index f = old_face(i);
+    for (int k = 0; k < 3; ++k) face_edges_(i, k) = topo_.face_edges(f, k);
+    area_(i) = ops_.face_areas(f);
+    fid(i) = fid_weight_(f);
+    gt.row(i) = gt_weight_.row(f);
+    n0.row(i) = N0r_.row(f);
+  });
+  fid_weight_.swap(fid);
+  gt_weight_.swap(gt);
+  N0r_.swap(n0);
+  edge_faces_.resize(ne_, 2);
+  detail::parallel_for(ne_, [&](Eigen::Index e) {
+    for (int k = 0; k < 2; ++k) {
+      const int f = topo_.edge_faces(e, k);
+      edge_faces_(e, k) = f < 0 || same ? f : new_face[static_cast<size_t>(f)];
+    }
+  });
+}
+
+// M (#F rows in the solver's order) in the input face order.
+Eigen::MatrixXd NormalFilterRun::in_input_order(const Rows& M) const {
+  if (order_.empty()) return Eigen::MatrixXd(M);
+  Eigen::MatrixXd out(M.rows(), 3);
+  for (Eigen::Index i = 0; i < M.rows(); ++i) out.row(order_[static_cast<size_t>(i)]) = M.row(i);
+  return out;
+}
+
 // 1. N-step right-hand side: 2αS N⁰ + GᵀL (r p + λ), face by face.
 void NormalFilterRun::n_step_rhs() {
   detail::parallel_for(nf_, [&](Eigen::Index f) {
     Eigen::RowVector3d b = fid_weight_(f) * N0r_.row(f);
     for (int j = 0; j < 3; ++j) {
-      const int e = topo_.face_edges(f, j);
+      const int e = face_edges_(f, j);
       if (gt_weight_(f, j) != 0) b += gt_weight_(f, j) * q_.row(e);
     }
     rhs_.row(f) = b;
@@ -292,14 +346,14 @@ void NormalFilterRun::n_step_rhs() {
 // (gnf fandisk 0.7: normal MSAE 1106e-3 at α = 0.5 against 818e-3 for the noisy input).
 // Default: solve the relaxed problem and project once after the loop (docs/presets.md).
 void NormalFilterRun::n_step(Rows& N_out, const Rows& fallback) {
-  const int sweeps = n_system_->solve(rhs_, N_out, o_.solver_tolerance);
+  const int sweeps = n_system_->solve_in_order(rhs_, N_out, o_.solver_tolerance);
   if (sweeps >= 0) res_.n_solver_iterations.push_back(sweeps);
   if (o_.project_each_iteration) normalize_rows(N_out, fallback);
 }
 
 // The stopping test's ‖N^{k+1} − N^k‖_U.
 double NormalFilterRun::normal_change() const {
-  const Eigen::VectorXd& area = ops_.face_areas;
+  const Eigen::VectorXd& area = area_;
   return std::sqrt(
       std::max(0.0, detail::deterministic_sums<1>(nf_, [&](Eigen::Index f0, Eigen::Index f1, std::array<double, 1>& s) {
                  for (Eigen::Index f = f0; f < f1; ++f) s[0] += area(f) * (N_.row(f) - N_prev_.row(f)).squaredNorm();
@@ -318,7 +372,7 @@ double NormalFilterRun::edge_pass() {
       Eigen::RowVector3d g = Eigen::RowVector3d::Zero(), pe = Eigen::RowVector3d::Zero();
       double pe_norm = 0;
       if (topo_.edge_is_interior[e]) {
-        g = N_.row(topo_.edge_faces(e, 0)) - N_.row(topo_.edge_faces(e, 1));
+        g = N_.row(edge_faces_(e, 0)) - N_.row(edge_faces_(e, 1));
         const Eigen::RowVector3d psi = g - lambda_.row(e) / o.penalty;
         const double psi_norm = psi.norm();
         const double thr = o.gamma * v_(e) * v_(e) * w_(e) / o.penalty;
@@ -409,7 +463,7 @@ NormalFilterResult NormalFilterRun::run(const ProgressCallback& progress) {
     res_.residual_history.push_back(std::sqrt(std::max(0.0, resid2)));
     res_.change_history.push_back(change);
     if (o_.record_energy)
-      res_.energy_history.push_back(energy_normalised(ops_, Eigen::MatrixXd(N_), v_, N0_, o_, face_alpha_, edge_beta_));
+      res_.energy_history.push_back(energy_normalised(ops_, in_input_order(N_), v_, N0_, o_, face_alpha_, edge_beta_));
     res_.iterations = k + 1;
 
     if (progress) {
@@ -425,7 +479,7 @@ NormalFilterResult NormalFilterRun::run(const ProgressCallback& progress) {
     N_.swap(N_next_);  // N = N^{k+1}
   }
   normalize_rows(N_, N0r_);
-  res_.normals = N_;
+  res_.normals = in_input_order(N_);
   res_.v = std::move(v_);
   res_.edges = topo_.edges;
   return std::move(res_);

@@ -210,14 +210,24 @@ PcgStats BlockPcg::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double re
   return solve_reordered<1>(b, x, relative_tolerance, max_iterations, what);
 }
 
-template <int K, class M>
-PcgStats BlockPcg::solve_reordered(const M& B, M& X, double relative_tolerance, int max_iterations,
-                                   const std::string& what) const {
+PcgStats BlockPcg::solve_in_order(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance,
+                                  int max_iterations, const std::string& what) const {
+  check_diagonal();
+  return solve_permuted<3>(B.data(), X.data(), relative_tolerance, max_iterations, what);
+}
+
+void BlockPcg::check_diagonal() const {
   if (bad_row_ >= 0) {
     std::ostringstream os;
     os << "conjugate gradients: diagonal entry " << bad_row_ << " = " << bad_value_ << " is not positive";
     throw SolverError(os.str());
   }
+}
+
+template <int K, class M>
+PcgStats BlockPcg::solve_reordered(const M& B, M& X, double relative_tolerance, int max_iterations,
+                                   const std::string& what) const {
+  check_diagonal();
   if (perm_.empty()) return solve_permuted<K>(B.data(), X.data(), relative_tolerance, max_iterations, what);
   const Eigen::Index n = A_.rows();
   Bp_.resize(static_cast<size_t>(K * n));

@@ -49,6 +49,13 @@ class BlockPcg {
   /// The same for one right-hand side b (n), x holding the warm start.
   PcgStats solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance, int max_iterations,
                  const std::string& what) const;
+  /// The order CG works in: position i holds original row order()[i]; empty when the rows
+  /// keep their order.
+  const std::vector<int>& order() const { return perm_; }
+  /// As solve, with B and X already in order() (no permutation in and out): for callers
+  /// that keep their iterates in that order across many solves.
+  PcgStats solve_in_order(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance, int max_iterations,
+                          const std::string& what) const;
   Eigen::Index size() const { return A_.rows(); }
 
  private:
@@ -58,6 +65,7 @@ class BlockPcg {
   template <int K>
   PcgStats solve_permuted(const double* B, double* X, double relative_tolerance, int max_iterations,
                           const std::string& what) const;
+  void check_diagonal() const;
   void init(const Eigen::SparseMatrix<double>& A, bool reorder);
   void find_diagonal();
   std::vector<int> perm_;          // reverse Cuthill–McKee: position i holds original row perm_[i]; empty: none

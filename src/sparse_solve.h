@@ -7,6 +7,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "msmesh/errors.h"
 #include "msmesh/operators.h"
@@ -57,11 +58,21 @@ class ConstantSystem {
     return -1;
   }
   bool iterative() const { return pcg_ != nullptr; }
+  /// The row order solve_in_order works in (position i holds original row order()[i]);
+  /// empty when it is the original order.
+  const std::vector<int>& order() const { return pcg_ ? pcg_->order() : no_order_; }
+  /// As solve, with B and X in order() (no permutation in and out per solve).
+  int solve_in_order(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance) const {
+    if (pcg_) return pcg_->solve_in_order(B, X, relative_tolerance, 100000, what_).iterations;
+    chol_->solve(B, X, what_);
+    return -1;
+  }
 
  private:
   std::string what_;
   std::unique_ptr<FixedCholesky> chol_;
   std::unique_ptr<BlockPcg> pcg_;
+  std::vector<int> no_order_;
 };
 
 }  // namespace msmesh::detail
