@@ -85,19 +85,23 @@ void normalize_rows(detail::RowMatrixX3& N, const detail::RowMatrixX3& fallback)
 // of slot j+1) and j+1 (as e−, paired with slot j+2). Built row by row, straight in
 // compressed form (a million-face mesh has 12 million line couplings: the triplet route
 // took 0.8 s there). The matrix is symmetric, so its rows are also its columns.
-SparseMatrix edge_smoothness_matrix(const Topology& topo, const Eigen::VectorXd& line_lengths, double c) {
-  const Eigen::Index ne = topo.num_edges(), nf = topo.num_faces();
+// face_edges: the edges of each face (#F by 3, slot k opposite corner k); line_lengths per
+// line 3f+k in the same face order.
+using FaceEdges = Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>;
+SparseMatrix edge_smoothness_matrix(Eigen::Index ne, const FaceEdges& face_edges, const Eigen::VectorXd& line_lengths,
+                                    double c) {
+  const Eigen::Index nf = face_edges.rows();
   // Incidences (face, slot) of every edge, grouped by edge.
   std::vector<int> first(static_cast<size_t>(ne) + 1, 0);
   for (Eigen::Index f = 0; f < nf; ++f)
-    for (int j = 0; j < 3; ++j) ++first[static_cast<size_t>(topo.face_edges(f, j)) + 1];
+    for (int j = 0; j < 3; ++j) ++first[static_cast<size_t>(face_edges(f, j)) + 1];
   for (size_t e = 0; e < static_cast<size_t>(ne); ++e) first[e + 1] += first[e];
   std::vector<int> inc(static_cast<size_t>(3 * nf));
   {
     std::vector<int> fill(first.begin(), first.end() - 1);
     for (Eigen::Index f = 0; f < nf; ++f)
       for (int j = 0; j < 3; ++j)
-        inc[static_cast<size_t>(fill[static_cast<size_t>(topo.face_edges(f, j))]++)] = static_cast<int>(3 * f + j);
+        inc[static_cast<size_t>(fill[static_cast<size_t>(face_edges(f, j))]++)] = static_cast<int>(3 * f + j);
   }
   return detail::symmetric_from_rows(
       ne, [&](Eigen::Index e) { return 1 + 2 * (first[static_cast<size_t>(e) + 1] - first[static_cast<size_t>(e)]); },
@@ -109,9 +113,9 @@ SparseMatrix edge_smoothness_matrix(const Topology& topo, const Eigen::VectorXd&
           const int j = inc[static_cast<size_t>(q)] % 3;
           const double w1 = c * line_lengths(3 * f + (j + 2) % 3), w2 = c * line_lengths(3 * f + (j + 1) % 3);
           diag += w1 + w2;
-          col[n] = topo.face_edges(f, (j + 1) % 3);
+          col[n] = face_edges(f, (j + 1) % 3);
           val[n++] = -w1;
-          col[n] = topo.face_edges(f, (j + 2) % 3);
+          col[n] = face_edges(f, (j + 2) % 3);
           val[n++] = -w2;
         }
         col[0] = static_cast<int>(e);  // every diagonal entry is stored, also a zero one
@@ -162,8 +166,9 @@ class NormalFilterRun {
   int v_step();
   void v_step_beside_next_n_step(bool last, int& v_iterations);
   bool overlap() const;
-  void renumber_faces();
+  void renumber();
   Eigen::MatrixXd in_input_order(const Rows& M) const;
+  Eigen::VectorXd edges_in_input_order(const Eigen::VectorXd& x) const;
 
   const NormalFilterOptions& o_;
   const Eigen::MatrixXi& F_;
@@ -178,13 +183,16 @@ class NormalFilterRun {
   Eigen::VectorXd smooth_diag_, v_rhs_, v_diag_;  // diagonal of 2βε Dᵀ L_W D; the v-step's b and diagonal
   std::optional<detail::BlockPcg> v_system_;      // the v-step matrix; its diagonal is set per iteration
   // The faces are renumbered once into the N-step solver's order (reverse Cuthill–McKee for
-  // CG, pcg.h; the input order otherwise): the per-face arrays below, N-step matrix and
-  // iterates all use it, so CG needs no permutation per solve and the passes over faces and
-  // edges read neighbouring faces close together. Position i holds input face order_[i].
-  std::vector<int> order_;
-  Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor> face_edges_;  // per face (new order)
+  // CG, pcg.h; the input order otherwise), and the edges in the order the faces first meet
+  // them: the per-face and per-edge arrays below, the two systems and the iterates all use
+  // these numbers, so CG needs no permutation per solve and every pass reads neighbours
+  // close together. Position i holds input face order_[i], input edge edge_order_[i]
+  // (both empty: the input order).
+  std::vector<int> order_, edge_order_;
+  FaceEdges face_edges_;                                               // new edge numbers
   Eigen::Matrix<int, Eigen::Dynamic, 2, Eigen::RowMajor> edge_faces_;  // new face numbers; −1: none
-  Eigen::VectorXd area_;                                               // face areas (new order)
+  Eigen::VectorXd area_, len_, beta_e_;  // face areas, edge lengths and β weights (new order)
+  std::vector<char> interior_;           // per edge (new order)
   Rows N0r_, N_, N_prev_, N_next_, rhs_, q_, lambda_;
   Eigen::VectorXd v_, w_;
   NormalFilterResult res_;
@@ -208,24 +216,29 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
   const double area_floor = 1e-12 * std::max(1e-300, ops_.face_areas.mean());
   fid_weight_ = (2.0 * o.alpha) * ops_.face_areas.cwiseMax(area_floor).cwiseProduct(face_alpha_).cwiseMax(area_floor);
   assemble_n_step();
+  N0r_ = detail::to_rows(N0_);
+  if (!o.record_energy) N0_ = Eigen::MatrixXd();  // only the energy reads the column-major copy
+  renumber();
 
   // v-step matrix (eq. 23): L·diag(2γ w‖p‖ + β_e/(2ε)) + 2βε Dᵀ L_W D. Only the diagonal
   // changes between iterations. Dᵀ L_W D is assembled directly from the corner lines (each
   // line l couples its entering and leaving edges), stored with explicit diagonal entries.
   {
-    SparseMatrix Kv = edge_smoothness_matrix(topo_, ops_.line_lengths, 2.0 * o.beta * o.epsilon);
+    Eigen::VectorXd lines(3 * nf_);
+    for (Eigen::Index i = 0; i < nf_; ++i) {
+      const Eigen::Index f = order_.empty() ? i : order_[static_cast<size_t>(i)];
+      for (int k = 0; k < 3; ++k) lines(3 * i + k) = ops_.line_lengths(3 * f + k);
+    }
+    SparseMatrix Kv = edge_smoothness_matrix(ne_, face_edges_, lines, 2.0 * o.beta * o.epsilon);
     smooth_diag_ = Kv.diagonal();
     // Few sweeps per solve (strongly diagonally dominant): not worth a reordering. CG takes
     // the matrix over (the largest array here: ~120 MB at a million faces, not copied).
     v_system_.emplace(std::move(Kv), /*reorder=*/false);
   }
-  v_rhs_ = ops_.edge_lengths.cwiseProduct(edge_beta_) * (o.beta / (2 * o.epsilon));
+  v_rhs_ = len_.cwiseProduct(beta_e_) * (o.beta / (2 * o.epsilon));
   v_diag_.resize(ne_);
 
   // The iterates, row-major (one row per face or edge) and allocated once.
-  N0r_ = detail::to_rows(N0_);
-  if (!o.record_energy) N0_ = Eigen::MatrixXd();  // only the energy reads the column-major copy
-  renumber_faces();
   N_ = N0r_;
   N_prev_.resize(nf_, 3);
   N_next_.resize(nf_, 3);
@@ -286,7 +299,7 @@ void NormalFilterRun::assemble_n_step() {
 
 // Puts the per-face arrays into the N-step solver's order (order_), with the face numbers of
 // the edges to match.
-void NormalFilterRun::renumber_faces() {
+void NormalFilterRun::renumber() {
   order_ = n_system_->order();
   const bool same = order_.empty();
   auto old_face = [&](Eigen::Index i) { return same ? i : static_cast<Eigen::Index>(order_[static_cast<size_t>(i)]); };
@@ -310,13 +323,50 @@ void NormalFilterRun::renumber_faces() {
   fid_weight_.swap(fid);
   gt_weight_.swap(gt);
   N0r_.swap(n0);
+  // Edges in the order the (renumbered) faces first meet them.
+  std::vector<int> new_edge;
+  if (!same) {
+    new_edge.assign(static_cast<size_t>(ne_), -1);
+    edge_order_.reserve(static_cast<size_t>(ne_));
+    for (Eigen::Index i = 0; i < nf_; ++i)
+      for (int k = 0; k < 3; ++k) {
+        int& e = face_edges_(i, k);
+        int& ne = new_edge[static_cast<size_t>(e)];
+        if (ne < 0) {
+          ne = static_cast<int>(edge_order_.size());
+          edge_order_.push_back(e);
+        }
+        e = ne;
+      }
+    // Edges on no face (none from build_topology) keep the end.
+    for (Eigen::Index e = 0; e < ne_; ++e)
+      if (new_edge[static_cast<size_t>(e)] < 0) {
+        new_edge[static_cast<size_t>(e)] = static_cast<int>(edge_order_.size());
+        edge_order_.push_back(static_cast<int>(e));
+      }
+  }
   edge_faces_.resize(ne_, 2);
-  detail::parallel_for(ne_, [&](Eigen::Index e) {
+  len_.resize(ne_);
+  beta_e_.resize(ne_);
+  interior_.resize(static_cast<size_t>(ne_));
+  detail::parallel_for(ne_, [&](Eigen::Index i) {
+    const Eigen::Index e = same ? i : edge_order_[static_cast<size_t>(i)];
     for (int k = 0; k < 2; ++k) {
       const int f = topo_.edge_faces(e, k);
-      edge_faces_(e, k) = f < 0 || same ? f : new_face[static_cast<size_t>(f)];
+      edge_faces_(i, k) = f < 0 || same ? f : new_face[static_cast<size_t>(f)];
     }
+    len_(i) = ops_.edge_lengths(e);
+    beta_e_(i) = edge_beta_(e);
+    interior_[static_cast<size_t>(i)] = topo_.edge_is_interior[static_cast<size_t>(e)] ? 1 : 0;
   });
+}
+
+// x (one value per edge in the solver's order) in the input edge order.
+Eigen::VectorXd NormalFilterRun::edges_in_input_order(const Eigen::VectorXd& x) const {
+  if (edge_order_.empty()) return x;
+  Eigen::VectorXd out(x.size());
+  for (Eigen::Index i = 0; i < x.size(); ++i) out(edge_order_[static_cast<size_t>(i)]) = x(i);
+  return out;
 }
 
 // M (#F rows in the solver's order) in the input face order.
@@ -365,13 +415,13 @@ double NormalFilterRun::normal_change() const {
 // v-step with this iteration's weights w; then the IRLA weights of the next iteration from
 // p^{k+1}. Returns ‖p − ∇N‖²_V.
 double NormalFilterRun::edge_pass() {
-  const Eigen::VectorXd& len = ops_.edge_lengths;
+  const Eigen::VectorXd& len = len_;
   const NormalFilterOptions& o = o_;
   return detail::deterministic_sums<1>(ne_, [&](Eigen::Index e0, Eigen::Index e1, std::array<double, 1>& s) {
     for (Eigen::Index e = e0; e < e1; ++e) {
       Eigen::RowVector3d g = Eigen::RowVector3d::Zero(), pe = Eigen::RowVector3d::Zero();
       double pe_norm = 0;
-      if (topo_.edge_is_interior[e]) {
+      if (interior_[static_cast<size_t>(e)]) {
         g = N_.row(edge_faces_(e, 0)) - N_.row(edge_faces_(e, 1));
         const Eigen::RowVector3d psi = g - lambda_.row(e) / o.penalty;
         const double psi_norm = psi.norm();
@@ -386,7 +436,7 @@ double NormalFilterRun::edge_pass() {
       q_.row(e) = o.penalty * pe + lambda_.row(e);
       s[0] += len(e) * r.squaredNorm();
       v_diag_(e) =
-          smooth_diag_(e) + len(e) * (2 * o.gamma * w_(e) * pe_norm + edge_beta_(e) * o.beta / (2 * o.epsilon));
+          smooth_diag_(e) + len(e) * (2 * o.gamma * w_(e) * pe_norm + beta_e_(e) * o.beta / (2 * o.epsilon));
       w_(e) = irla_weight(pe_norm, o);
     }
   })[0];
@@ -463,7 +513,7 @@ NormalFilterResult NormalFilterRun::run(const ProgressCallback& progress) {
     res_.residual_history.push_back(std::sqrt(std::max(0.0, resid2)));
     res_.change_history.push_back(change);
     if (o_.record_energy)
-      res_.energy_history.push_back(energy_normalised(ops_, in_input_order(N_), v_, N0_, o_, face_alpha_, edge_beta_));
+      res_.energy_history.push_back(energy_normalised(ops_, in_input_order(N_), edges_in_input_order(v_), N0_, o_, face_alpha_, edge_beta_));
     res_.iterations = k + 1;
 
     if (progress) {
@@ -480,7 +530,7 @@ NormalFilterResult NormalFilterRun::run(const ProgressCallback& progress) {
   }
   normalize_rows(N_, N0r_);
   res_.normals = in_input_order(N_);
-  res_.v = std::move(v_);
+  res_.v = edges_in_input_order(v_);
   res_.edges = topo_.edges;
   return std::move(res_);
 }
