@@ -173,9 +173,10 @@ class NormalFilterRun {
   const NormalFilterOptions& o_;
   const Eigen::MatrixXi& F_;
   const Topology& topo_;
-  const Operators ops_;
+  Operators ops_;  // its arrays are released after the set-up unless the energy is recorded
   const Eigen::Index nf_, ne_;
-  const Eigen::VectorXd face_alpha_, edge_beta_;
+  Eigen::VectorXd face_alpha_;
+  Eigen::VectorXd edge_beta_;
   Eigen::MatrixXd N0_;
   Eigen::VectorXd fid_weight_;  // 2α s_f (floored) per face
   std::optional<detail::ConstantSystem> n_system_;
@@ -237,6 +238,14 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
   }
   v_rhs_ = len_.cwiseProduct(beta_e_) * (o.beta / (2 * o.epsilon));
   v_diag_.resize(ne_);
+  if (!o.record_energy) {
+    // Only the energy reads the input-order arrays from here on (the renumbered copies serve
+    // the iterations): freed before the iterations' arrays, which then reuse the memory (at
+    // this size every fresh page costs its zeroing in the kernel).
+    ops_ = Operators();
+    face_alpha_ = Eigen::VectorXd();
+    edge_beta_ = Eigen::VectorXd();
+  }
 
   // The iterates, row-major (one row per face or edge) and allocated once.
   N_ = N0r_;
