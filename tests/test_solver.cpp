@@ -2,6 +2,8 @@
 // conjugate gradients) give the same filtered normals and vertices, and the parallel loops
 // give bit-identical results whatever the number of threads (set_threads; its checks: test_threads.cpp; msmesh
 // --threads: cli/test_threads_cli.cpp).
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #ifdef _OPENMP
@@ -48,6 +50,24 @@ TEST(Solver, ConjugateGradientsMatchCholeskyInTheNormalFilter) {
   }
   // Auto factors small meshes (exact, and faster there).
   EXPECT_TRUE(filter_with(m, LinearSolver::Auto).n_solver_iterations.empty());
+}
+
+TEST(Solver, ConjugateGradientsRecordTheEnergyOfTheFactorisation) {
+  // CG renumbers the faces and edges internally (normal_filter.cpp): the recorded energy must
+  // still be that of the input-order normals and v.
+  const Mesh m = test::noisy_cube(8);
+  NormalFilterOptions o = preset_options("cad").normals;
+  o.record_energy = true;
+  o.tolerance = 0;
+  o.max_iterations = 10;
+  o.solver = LinearSolver::Cholesky;
+  const NormalFilterResult a = filter_normals(m.V, m.F, o);
+  o.solver = LinearSolver::CG;
+  const NormalFilterResult b = filter_normals(m.V, m.F, o);
+  ASSERT_EQ(a.energy_history.size(), 10u);
+  ASSERT_EQ(b.energy_history.size(), 10u);
+  for (size_t k = 0; k < a.energy_history.size(); ++k)
+    EXPECT_NEAR(a.energy_history[k], b.energy_history[k], 1e-5 * std::abs(a.energy_history[k])) << k;
 }
 
 TEST(Solver, TighterToleranceApproachesTheFactorisation) {
