@@ -123,6 +123,8 @@ void run(const Args& a) {
           .add("noise_sigma", preset.noise.sigma)
           .add("noise_sigma_rms", preset.noise.sigma_rms)
           .add("noise_outlier_fraction", preset.noise.outlier_fraction)
+          .add("noise_sigma_noise", preset.noise.sigma_noise)
+          .add("noise_detail", preset.noise.detail)
           .add("noise_level_used", preset.sigma)
           .add("noise_despiked", preset.despiked)
           .add("noise_sigma_rms_despiked", preset.noise_despiked.sigma_rms);

@@ -9,15 +9,23 @@ namespace msmesh::detail {
 
 LowPassResiduals low_pass_residuals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   LowPassResiduals r;
+  // Taubin's iterations are a fixed linear map applied in turn: the light pass followed by the
+  // rest is the full low pass, bit for bit.
   TaubinOptions to;
-  to.iterations = kLowPassIterations;
-  r.smooth = taubin_smooth(V, F, to);
+  to.iterations = kLightPassIterations;
+  const Eigen::MatrixXd light = taubin_smooth(V, F, to);
+  to.iterations = kLowPassIterations - kLightPassIterations;
+  r.smooth = taubin_smooth(light, F, to);
   r.normals = vertex_normals(r.smooth, F);
   r.mean_edge = mean_edge_length(r.smooth, F);
   r.used.assign(static_cast<std::size_t>(V.rows()), false);
   for (Eigen::Index i = 0; i < F.size(); ++i) r.used[static_cast<std::size_t>(F.data()[i])] = true;
   r.residual.resize(V.rows());
   for (Eigen::Index i = 0; i < V.rows(); ++i) r.residual(i) = (V.row(i) - r.smooth.row(i)).dot(r.normals.row(i));
+  const Eigen::MatrixXd light_normals = vertex_normals(light, F);
+  r.light_residual.resize(V.rows());
+  for (Eigen::Index i = 0; i < V.rows(); ++i)
+    r.light_residual(i) = (V.row(i) - light.row(i)).dot(light_normals.row(i));
   return r;
 }
 

@@ -14,11 +14,16 @@ struct LowPassResiduals {
   Eigen::MatrixXd smooth;    ///< #V by 3 low-pass positions
   Eigen::MatrixXd normals;   ///< #V by 3 vertex normals of the low-pass copy
   Eigen::VectorXd residual;  ///< #V signed distances along the normals, in the mesh's units
+  /// #V: the same after the first kLightPassIterations iterations only (along that copy's
+  /// normals). White noise leaves a fixed fraction of itself in both; the shape's detail and
+  /// creases grow with the iterations (noise_estimate.cpp).
+  Eigen::VectorXd light_residual;
   std::vector<bool> used;    ///< #V: referenced by a face
   double mean_edge = 0;      ///< mean edge length of the low-pass copy
 };
 
 constexpr int kLowPassIterations = 10;
+constexpr int kLightPassIterations = 3;
 constexpr double kMadToSigma = 1.4826;  // σ of a Gaussian / its median absolute deviation
 
 LowPassResiduals low_pass_residuals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F);

@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 
 #include "msmesh/errors.h"
+#include "msmesh/geometry.h"
 #include "msmesh/noise.h"
 #include "msmesh/noise_estimate.h"
 #include "msmesh/shapes.h"
@@ -22,6 +23,18 @@ Eigen::MatrixXd seeded(const Mesh& m, double sigma, NoiseDirection d = NoiseDire
   return add_noise(m.V, m.F, o);
 }
 
+// A sphere with fine bumps along its normals, a few edges across: shape detail that the low
+// pass removes as it removes noise.
+Mesh bumpy_sphere() {
+  Mesh m = make_shape("sphere", 16);
+  const double edge = mean_edge_length(m.V, m.F), h = 0.3 * edge, k = 2 * M_PI / (5 * edge);  // wavelength 5 edges
+  for (Eigen::Index i = 0; i < m.V.rows(); ++i) {
+    const Eigen::RowVector3d p = m.V.row(i), n = p.normalized();
+    m.V.row(i) = p + h * std::sin(k * p.x()) * std::sin(k * p.y()) * std::sin(k * p.z()) * n;
+  }
+  return m;
+}
+
 }  // namespace
 
 TEST(NoiseEstimate, FollowsSeededGaussianNoise) {
@@ -31,6 +44,8 @@ TEST(NoiseEstimate, FollowsSeededGaussianNoise) {
     EXPECT_NEAR(e.sigma, sigma, 0.25 * sigma) << sigma;
     EXPECT_NEAR(e.sigma_rms, e.sigma, 0.2 * e.sigma) << sigma;  // Gaussian: no outliers to speak of
     EXPECT_LT(e.outlier_fraction, 0.01) << sigma;
+    EXPECT_NEAR(e.sigma_noise, sigma, 0.15 * sigma) << sigma;  // a sphere has no detail to take apart
+    EXPECT_NEAR(e.sigma * e.sigma, e.sigma_noise * e.sigma_noise + e.detail * e.detail, 1e-12) << sigma;
   }
   // In random directions: the part along the normal, σ/√3.
   const NoiseEstimate r = estimate_noise(seeded(sphere, 0.6, NoiseDirection::Random), sphere.F);
@@ -47,6 +62,19 @@ TEST(NoiseEstimate, CleanMeshesHaveLittleAndImpulsiveNoiseShowsInTheRms) {
   EXPECT_GT(imp.outlier_fraction, 0.02);
 }
 
+TEST(NoiseEstimate, FineDetailIsToldApartFromNoise) {
+  const Mesh bumps = bumpy_sphere();
+  const NoiseEstimate clean = estimate_noise(bumps.V, bumps.F);
+  EXPECT_GT(clean.sigma, 0.05);  // the bumps read as noise to the single low pass ...
+  EXPECT_LT(clean.sigma_noise, 0.5 * clean.sigma);  // ... and mostly as shape to the two
+  EXPECT_GT(clean.detail, 0.85 * clean.sigma);
+  const NoiseEstimate low = estimate_noise(seeded(bumps, 0.1), bumps.F);
+  EXPECT_LT(std::abs(low.sigma_noise - 0.1), 0.5 * std::abs(low.sigma - 0.1));
+  EXPECT_NEAR(low.sigma_noise, 0.1, 0.1 * 0.1);
+  const NoiseEstimate high = estimate_noise(seeded(bumps, 0.3), bumps.F);  // the bumps hardly count
+  EXPECT_NEAR(high.sigma_noise, 0.3, 0.1 * 0.3);
+}
+
 TEST(NoiseEstimate, InvariantUnderScaleRotationAndTranslation) {
   const Mesh part = make_shape("fandisk", 8);
   const Eigen::MatrixXd V = seeded(part, 0.3);
@@ -56,6 +84,8 @@ TEST(NoiseEstimate, InvariantUnderScaleRotationAndTranslation) {
   const NoiseEstimate a = estimate_noise(V, part.F), b = estimate_noise(W, part.F);
   EXPECT_NEAR(a.sigma, b.sigma, 1e-9);
   EXPECT_NEAR(a.sigma_rms, b.sigma_rms, 1e-9);
+  EXPECT_NEAR(a.sigma_noise, b.sigma_noise, 1e-9);
+  EXPECT_NEAR(a.detail, b.detail, 1e-9);
   EXPECT_EQ(a.outlier_fraction, b.outlier_fraction);
   EXPECT_NE(a.summary().find("noise sigma"), std::string::npos);
 }

@@ -170,6 +170,8 @@ def _resolve_preset(V, F, preset, report, strength=1.0):
             "noise_sigma",
             "noise_sigma_rms",
             "noise_outlier_fraction",
+            "noise_sigma_noise",
+            "noise_detail",
             "noise_level_used",
             "noise_despiked",
             "noise_sigma_rms_despiked",
@@ -184,7 +186,9 @@ def estimate_noise(V: ArrayLike, F: ArrayLike) -> Dict[str, Any]:
 
     Returns a dict: sigma (robust standard deviation of the noise along the normals, in mean
     edge lengths), sigma_rms (RMS of the same residuals; well above sigma under impulsive
-    noise), outlier_fraction (vertices beyond 4 sigma) and summary (one line). 'auto' sets its
+    noise), outlier_fraction (vertices beyond 4 sigma), sigma_noise and detail (sigma split
+    into the noise alone and the shape's own fine detail and creases, which a low pass also
+    removes: sigma**2 = sigma_noise**2 + detail**2) and summary (one line). 'auto' sets its
     parameters from sigma_rms (docs/presets.md).
     """
     V, F = _checks.mesh(V, F)

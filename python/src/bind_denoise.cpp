@@ -82,6 +82,8 @@ py::dict estimate_noise_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi&
   d["sigma"] = e.sigma;
   d["sigma_rms"] = e.sigma_rms;
   d["outlier_fraction"] = e.outlier_fraction;
+  d["sigma_noise"] = e.sigma_noise;
+  d["detail"] = e.detail;
   d["summary"] = e.summary();
   return d;
 }

@@ -131,6 +131,8 @@ py::dict resolve_preset_binding(const std::string& name, const Eigen::MatrixXd& 
     d["noise_sigma"] = r.noise.sigma;
     d["noise_sigma_rms"] = r.noise.sigma_rms;
     d["noise_outlier_fraction"] = r.noise.outlier_fraction;
+    d["noise_sigma_noise"] = r.noise.sigma_noise;
+    d["noise_detail"] = r.noise.detail;
     d["noise_level_used"] = r.sigma;
     d["noise_despiked"] = r.despiked;
     d["noise_sigma_rms_despiked"] = r.noise_despiked.sigma_rms;

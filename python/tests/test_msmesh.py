@@ -92,8 +92,10 @@ def test_noise_estimate_and_strength(noisy_fandisk):
     e = msmesh.estimate_noise(V, F)  # seeded sigma 0.2 along the normals
     assert 0.14 < e["sigma"] < 0.3 and e["sigma_rms"] >= e["sigma"] * 0.9
     assert "noise sigma" in e["summary"]
+    assert e["sigma"] ** 2 == pytest.approx(e["sigma_noise"] ** 2 + e["detail"] ** 2)
     _, r = msmesh.denoise(V, F)
     assert r["noise_sigma_rms"] == pytest.approx(e["sigma_rms"]) and r["strength"] == 1.0
+    assert r["noise_sigma_noise"] == pytest.approx(e["sigma_noise"]) and r["noise_detail"] == pytest.approx(e["detail"])
     assert "noise sigma" in r["preset_reason"]
     _, r2 = msmesh.denoise(V, F, strength=3.0)
     assert r2["noise_level_used"] == pytest.approx(3.0 * r["noise_level_used"])
