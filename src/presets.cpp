@@ -46,6 +46,13 @@ constexpr double kFairnessFrom = 0.1, kFairnessSpan = 0.3, kFairnessMinShare = 0
 //   closeness to the input is a Gaussian-likelihood weight, ∝ 1/σ², so below σ 0.13 it grows and
 //   the vertex update keeps the detail a nearly clean input still has (up to 3×, reached at σ 0.075).
 constexpr double kClosenessSigma = 0.13, kClosenessMaxGain = 3.0;
+//   Class smooth, the shape's own detail (NoiseEstimate::detail, d): σ is the RMS without it,
+//   √(σ_rms² − d²), and ω₃ is multiplied by 1 + kDetailCloseness (d/σ)², at most kDetailMaxGain:
+//   an organic surface with fine detail of its own (the DeepMeshPrior dragon and sheep, the
+//   statues) keeps it where the noise alone would be smoothed (docs/presets.md, "Noise and
+//   detail"; measured on the sweep: gain 3 against 10; on CAD parts the detail is their creases
+//   and more closeness loses, so the class cad is unchanged).
+constexpr double kDetailCloseness = 3.0, kDetailMaxGain = 10.0;
 //   Impulsive noise: when at least kDespikeFromOutliers of the vertices are outliers of the noise
 //   estimate (beyond 4 robust σ) and σ_rms is at least kDespikeFromSigmaRms, the spikes are first
 //   moved onto a low-pass copy (despike.h) at kDespikeThreshold robust σ, and the rules above take σ
@@ -110,10 +117,11 @@ DenoiseOptions preset_options(const std::string& name) {
   throw InvalidInput("unknown preset '" + name + "'; valid: auto, cad, smooth, paper");
 }
 
-DenoiseOptions adaptive_options(const std::string& shape_class, double sigma) {
+DenoiseOptions adaptive_options(const std::string& shape_class, double sigma, double detail) {
   if (shape_class != "cad" && shape_class != "smooth")
     throw InvalidInput("adaptive options: shape class must be cad or smooth, got '" + shape_class + "'");
   if (!(sigma >= 0)) throw InvalidInput("adaptive options: noise level must be >= 0");
+  if (!(detail >= 0)) throw InvalidInput("adaptive options: detail must be >= 0");
   DenoiseOptions o = preset_options(shape_class);
   const double alpha_min = shape_class == "cad" ? kAlphaMinCad : kAlphaMinSmooth;
   o.normals.alpha = sigma > 0 ? std::clamp(kAlphaTimesSigma / sigma, alpha_min, kAlphaMax) : kAlphaMax;
@@ -122,6 +130,10 @@ DenoiseOptions adaptive_options(const std::string& shape_class, double sigma) {
     o.vertices.omega2 *= std::clamp((sigma - kFairnessFrom) / kFairnessSpan, kFairnessMinShare, 1.0);
   const double closeness = sigma > 0 ? kClosenessSigma / sigma : 1e300;
   o.vertices.omega3 *= std::clamp(closeness * closeness, 1.0, kClosenessMaxGain);
+  if (shape_class == "smooth" && detail > 0) {
+    const double q = sigma > 0 ? detail / sigma : 1e300;
+    o.vertices.omega3 *= std::min(1 + kDetailCloseness * q * q, kDetailMaxGain);
+  }
   return o;
 }
 
@@ -180,7 +192,8 @@ std::string ResolvedPreset::reason() const {
                                        fixed(100 * despiked_fraction, 1) + " % of the vertices despiked at " +
                                        fixed(options.despike_threshold, 1) + " sigma, then " + noise_despiked.summary()
                                  : "";
-  return "chosen automatically (" + sampled + noise.summary() + spikes + s + ": alpha " +
+  const std::string detail = preset == "smooth" ? ", sigma without the detail " + fixed(sigma, 3) : "";
+  return "chosen automatically (" + sampled + noise.summary() + spikes + s + detail + ": alpha " +
          fixed(options.normals.alpha, 2) + ", prefilter " + std::to_string(options.prefilter_iterations) + "; " +
          choice.reason + ")";
 }
@@ -232,7 +245,8 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
     r.noise_despiked = detail::estimate_noise_masked(spikes.V, SF, core_vertices);
   }
   const Eigen::MatrixXd& MV = r.despiked ? spikes.V : SV;
-  r.sigma = strength * (r.despiked ? r.noise_despiked : r.noise).sigma_rms;
+  const NoiseEstimate& measured = r.despiked ? r.noise_despiked : r.noise;
+  r.sigma = strength * measured.sigma_rms;
   // The shape is judged on the mesh the first normals come from, so that heavy noise does not
   // count as creases.
   const int prefilter = prefilter_for(r.sigma);
@@ -241,7 +255,13 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   r.choice = detail::choose_preset_masked(prefilter > 0 ? taubin_smooth(MV, SF, to) : MV, SF,
                                           sampled ? &sample.core_face : nullptr);
   r.preset = r.choice.preset;
-  r.options = adaptive_options(r.preset, r.sigma);
+  // The class smooth: the noise without the shape's own detail, and the detail kept (the class
+  // was judged on the copy pre-filtered for σ_rms; the options may pre-filter less).
+  if (r.preset == "smooth") {
+    const double rms = measured.sigma_rms, d = measured.detail;
+    r.sigma = strength * std::sqrt(std::max(0.0, rms * rms - d * d));
+  }
+  r.options = adaptive_options(r.preset, r.sigma, measured.detail);
   if (r.despiked) r.options.despike_threshold = kDespikeThreshold;
   return r;
 }

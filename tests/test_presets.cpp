@@ -123,7 +123,9 @@ TEST(Presets, AutoRemovesSpikesUnderImpulsiveNoiseOnly) {
   EXPECT_GT(s.despiked_fraction, 0.05);
   // The rules take σ from the despiked mesh, which reads far less noisy than the spiky input.
   EXPECT_LT(s.noise_despiked.sigma_rms, 0.7 * s.noise.sigma_rms);
-  EXPECT_EQ(s.sigma, s.noise_despiked.sigma_rms);
+  const NoiseEstimate& d = s.noise_despiked;
+  EXPECT_EQ(s.preset, "smooth");
+  EXPECT_DOUBLE_EQ(s.sigma, std::sqrt(std::max(0.0, d.sigma_rms * d.sigma_rms - d.detail * d.detail)));
   EXPECT_NE(s.reason().find("despiked at"), std::string::npos) << s.reason();
 }
 
@@ -176,8 +178,19 @@ TEST(Presets, AdaptiveOptionsFollowTheNoise) {
     EXPECT_DOUBLE_EQ(adaptive_options(cls, 0.5).vertices.omega3, omega3) << cls;  // the class's from σ 0.13 up
   }
   EXPECT_GT(adaptive_options("cad", 0.6).prefilter_iterations, 0);
+  // The shape's own detail raises the closeness of the class smooth by 1 + 3 (d/σ)², at most 10×,
+  // and changes nothing else; the class cad ignores it (its detail is its creases).
+  const DenoiseOptions plain = adaptive_options("smooth", 0.2);
+  DenoiseOptions kept = adaptive_options("smooth", 0.2, 0.1);
+  EXPECT_NEAR(kept.vertices.omega3, plain.vertices.omega3 * (1 + 3 * 0.25), 1e-12);
+  kept.vertices.omega3 = plain.vertices.omega3;
+  expect_same_parameters(denoise_parameters(), kept, plain, "detail");
+  EXPECT_NEAR(adaptive_options("smooth", 0.0, 0.1).vertices.omega3, 10 * adaptive_options("smooth", 0.0).vertices.omega3,
+              1e-12);
+  expect_same_parameters(denoise_parameters(), adaptive_options("cad", 0.2, 0.1), adaptive_options("cad", 0.2), "cad");
   EXPECT_THROW(adaptive_options("organic", 0.3), InvalidInput);
   EXPECT_THROW(adaptive_options("cad", -1), InvalidInput);
+  EXPECT_THROW(adaptive_options("smooth", 0.3, -0.1), InvalidInput);
 }
 
 TEST(Presets, StrengthScalesWhatIsRemoved) {

@@ -32,9 +32,10 @@ DenoiseOptions preset_options(const std::string& name);
 
 /// The noise-adaptive options of "auto" for a shape class ("cad" or "smooth") and a noise level
 /// σ (mean edge lengths, as NoiseEstimate::sigma_rms): the class's preset with α and the
-/// pre-filter following σ (docs/presets.md, "--preset auto"). Throws InvalidInput for an
-/// unknown class or a negative σ.
-DenoiseOptions adaptive_options(const std::string& shape_class, double sigma);
+/// pre-filter following σ (docs/presets.md, "--preset auto"). `detail` (NoiseEstimate::detail,
+/// the shape's own fine detail) raises the closeness weight of the class smooth, so that the
+/// vertex update keeps it. Throws InvalidInput for an unknown class or a negative σ or detail.
+DenoiseOptions adaptive_options(const std::string& shape_class, double sigma, double detail = 0);
 
 /// What the shape rule saw on a mesh, and the class it picked.
 struct PresetChoice {
@@ -67,7 +68,9 @@ struct ResolvedPreset {
   NoiseEstimate noise_despiked;
   double despiked_fraction = 0;
   double strength = 1.0;  ///< how much to remove: 1 the default, larger smooths more
-  double sigma = 0;       ///< the noise level the rules used: strength × (despiked ? noise_despiked : noise).sigma_rms
+  /// The noise level the rules used: strength × σ_rms of the estimate (despiked ? noise_despiked
+  /// : noise), for the class smooth without its detail: strength × √(σ_rms² − detail²).
+  double sigma = 0;
 
   /// Large meshes (auto): the faces measured, the cores of sample_patches patches spread over
   /// the mesh (0: the whole mesh was measured).
