@@ -21,12 +21,14 @@ constexpr double kOutlierSigmas = 4.0;
 // the light (×3) and the full (×10) low pass, s₃ and s₁₀, are modelled as s₃² = n²/ρ² + d²,
 // s₁₀² = n² + g²d², n the noise's part and d the shape's. White noise: s₁₀/s₃ = ρ, the median
 // over the 48 public clean meshes with seeded noise 1.375, 1.371, 1.387, 1.411 at σ 0.2, 0.3,
-// 0.5, 0.7 (1.33–1.44 between meshes): ρ = 1.372 + 0.13 max(0, s₁₀ − 0.28). The shape's detail
+// 0.5, 0.7 (1.33–1.44 between meshes): ρ = 1.372 + 0.13 max(0, s₁₀ − 0.28), held at 1.45 beyond
+// the measured range (s₁₀ ≈ 0.9, σ ≈ 1; ρ must stay below g). The shape's detail
 // and creases grow more, by g = s₁₀/s₃ of the clean meshes: 1.5–2.1 on the organic ones (the
 // dragon 1.8), more on CAD parts, whose creases grow most. g = 2 subtracts a little less than
 // the detail of the CAD parts and a little more than the smoothest statues'. The split is only
 // as good as ρ: 2 % off in ρ reads as detail of 0.28 σ, so at heavy noise the detail is coarse.
-constexpr double kNoiseGrowth = 1.372, kNoiseGrowthSlope = 0.13, kNoiseGrowthFrom = 0.28, kDetailGrowth = 2.0;
+constexpr double kNoiseGrowth = 1.372, kNoiseGrowthSlope = 0.13, kNoiseGrowthFrom = 0.28, kNoiseGrowthMax = 1.45;
+constexpr double kDetailGrowth = 2.0;
 
 double robust_sigma(std::vector<double> d) {
   const double m = detail::median_of(d);
@@ -86,7 +88,8 @@ NoiseEstimate detail::estimate_noise_from(const LowPassResiduals& lp, const std:
   for (const double x : a) outliers += x > kOutlierSigmas * mad;
   e.outlier_fraction = static_cast<double>(outliers) / static_cast<double>(d.size());
   const double s3 = robust_sigma(std::move(light)), g2 = kDetailGrowth * kDetailGrowth;
-  const double rho = kNoiseGrowth + kNoiseGrowthSlope * std::max(0.0, mad - kNoiseGrowthFrom);
+  const double rho =
+      std::min(kNoiseGrowth + kNoiseGrowthSlope * std::max(0.0, mad - kNoiseGrowthFrom), kNoiseGrowthMax);
   const double n2 = std::clamp((g2 * s3 * s3 - mad * mad) / (g2 / (rho * rho) - 1), 0.0, mad * mad);
   e.sigma_noise = std::sqrt(n2) / kCalibration;
   e.detail = std::sqrt(mad * mad - n2) / kCalibration;

@@ -73,6 +73,11 @@ TEST(NoiseEstimate, FineDetailIsToldApartFromNoise) {
   EXPECT_NEAR(low.sigma_noise, 0.1, 0.1 * 0.1);
   const NoiseEstimate high = estimate_noise(seeded(bumps, 0.3), bumps.F);  // the bumps hardly count
   EXPECT_NEAR(high.sigma_noise, 0.3, 0.1 * 0.3);
+  // Far beyond the measured range the split stays defined: all noise, no detail made up.
+  const Mesh sphere = make_shape("sphere", 16);
+  const NoiseEstimate huge = estimate_noise(seeded(sphere, 3.0), sphere.F);
+  EXPECT_TRUE(std::isfinite(huge.sigma_noise) && std::isfinite(huge.detail));
+  EXPECT_GT(huge.sigma_noise, 0.5 * huge.sigma);
 }
 
 TEST(NoiseEstimate, InvariantUnderScaleRotationAndTranslation) {
