@@ -46,13 +46,19 @@ constexpr double kFairnessFrom = 0.1, kFairnessSpan = 0.3, kFairnessMinShare = 0
 //   closeness to the input is a Gaussian-likelihood weight, ∝ 1/σ², so below σ 0.13 it grows and
 //   the vertex update keeps the detail a nearly clean input still has (up to 3×, reached at σ 0.075).
 constexpr double kClosenessSigma = 0.13, kClosenessMaxGain = 3.0;
-//   Class smooth, the shape's own detail (NoiseEstimate::detail, d): σ is the RMS without it,
+//   Class smooth, the shape's own detail (d, below): σ is the RMS without it,
 //   √(σ_rms² − d²), and ω₃ is multiplied by 1 + kDetailCloseness (d/σ)², at most kDetailMaxGain:
 //   an organic surface with fine detail of its own (the DeepMeshPrior dragon and sheep, the
 //   statues) keeps it where the noise alone would be smoothed (docs/presets.md, "Noise and
 //   detail"; measured on the sweep: gain 3 against 10; on CAD parts the detail is their creases
 //   and more closeness loses, so the class cad is unchanged).
-constexpr double kDetailCloseness = 3.0, kDetailMaxGain = 10.0;
+//   d is the estimate's detail less kDetailDoubt × its noise alone, in quadrature: the split reads
+//   0.3–0.4 σ of noise as detail where a mesh's noise ratio ρ is 3 % off the median
+//   (noise_estimate.cpp), which raised the closeness on smooth meshes with little detail (seeded
+//   σ 0.05–0.1 on a procedural torus with waves 4–16 edges long, not in ../shared: up to 1.25× the
+//   MSAE of before; with 0.5: up to 1.09×, and on the sweep 511 → 514 cases with flips no more
+//   than the fewer of the baselines').
+constexpr double kDetailCloseness = 3.0, kDetailMaxGain = 10.0, kDetailDoubt = 0.5;
 //   Impulsive noise: when at least kDespikeFromOutliers of the vertices are outliers of the noise
 //   estimate (beyond 4 robust σ) and σ_rms is at least kDespikeFromSigmaRms, the spikes are first
 //   moved onto a low-pass copy (despike.h) at kDespikeThreshold robust σ, and the rules above take σ
@@ -257,11 +263,13 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   r.preset = r.choice.preset;
   // The class smooth: the noise without the shape's own detail, and the detail kept (the class
   // was judged on the copy pre-filtered for σ_rms; the options may pre-filter less).
+  double detail = 0;
   if (r.preset == "smooth") {
-    const double rms = measured.sigma_rms, d = measured.detail;
-    r.sigma = strength * std::sqrt(std::max(0.0, rms * rms - d * d));
+    const double rms = measured.sigma_rms, d = measured.detail, n = kDetailDoubt * measured.sigma_noise;
+    detail = std::sqrt(std::max(0.0, d * d - n * n));
+    r.sigma = strength * std::sqrt(std::max(0.0, rms * rms - detail * detail));
   }
-  r.options = adaptive_options(r.preset, r.sigma, measured.detail);
+  r.options = adaptive_options(r.preset, r.sigma, detail);
   if (r.despiked) r.options.despike_threshold = kDespikeThreshold;
   return r;
 }

@@ -125,7 +125,8 @@ TEST(Presets, AutoRemovesSpikesUnderImpulsiveNoiseOnly) {
   EXPECT_LT(s.noise_despiked.sigma_rms, 0.7 * s.noise.sigma_rms);
   const NoiseEstimate& d = s.noise_despiked;
   EXPECT_EQ(s.preset, "smooth");
-  EXPECT_DOUBLE_EQ(s.sigma, std::sqrt(std::max(0.0, d.sigma_rms * d.sigma_rms - d.detail * d.detail)));
+  const double detail2 = std::max(0.0, d.detail * d.detail - 0.25 * d.sigma_noise * d.sigma_noise);
+  EXPECT_DOUBLE_EQ(s.sigma, std::sqrt(std::max(0.0, d.sigma_rms * d.sigma_rms - detail2)));
   EXPECT_NE(s.reason().find("despiked at"), std::string::npos) << s.reason();
 }
 

@@ -69,7 +69,8 @@ struct ResolvedPreset {
   double despiked_fraction = 0;
   double strength = 1.0;  ///< how much to remove: 1 the default, larger smooths more
   /// The noise level the rules used: strength × σ_rms of the estimate (despiked ? noise_despiked
-  /// : noise), for the class smooth without its detail: strength × √(σ_rms² − detail²).
+  /// : noise), for the class smooth without its detail d: strength × √(σ_rms² − d²), d² =
+  /// max(0, detail² − (0.5 sigma_noise)²) of the same estimate.
   double sigma = 0;
 
   /// Large meshes (auto): the faces measured, the cores of sample_patches patches spread over
