@@ -24,8 +24,7 @@ LowPassResiduals low_pass_residuals(const Eigen::MatrixXd& V, const Eigen::Matri
   for (Eigen::Index i = 0; i < V.rows(); ++i) r.residual(i) = (V.row(i) - r.smooth.row(i)).dot(r.normals.row(i));
   const Eigen::MatrixXd light_normals = vertex_normals(light, F);
   r.light_residual.resize(V.rows());
-  for (Eigen::Index i = 0; i < V.rows(); ++i)
-    r.light_residual(i) = (V.row(i) - light.row(i)).dot(light_normals.row(i));
+  for (Eigen::Index i = 0; i < V.rows(); ++i) r.light_residual(i) = (V.row(i) - light.row(i)).dot(light_normals.row(i));
   return r;
 }
 

@@ -18,8 +18,8 @@ struct LowPassResiduals {
   /// normals). White noise leaves a fixed fraction of itself in both; the shape's detail and
   /// creases grow with the iterations (noise_estimate.cpp).
   Eigen::VectorXd light_residual;
-  std::vector<bool> used;    ///< #V: referenced by a face
-  double mean_edge = 0;      ///< mean edge length of the low-pass copy
+  std::vector<bool> used;  ///< #V: referenced by a face
+  double mean_edge = 0;    ///< mean edge length of the low-pass copy
 };
 
 constexpr int kLowPassIterations = 10;

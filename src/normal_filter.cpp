@@ -315,7 +315,8 @@ void NormalFilterRun::renumber() {
   std::vector<int> new_face;
   if (!same) {
     new_face.resize(static_cast<size_t>(nf_));
-    for (Eigen::Index i = 0; i < nf_; ++i) new_face[static_cast<size_t>(order_[static_cast<size_t>(i)])] = static_cast<int>(i);
+    for (Eigen::Index i = 0; i < nf_; ++i)
+      new_face[static_cast<size_t>(order_[static_cast<size_t>(i)])] = static_cast<int>(i);
   }
   face_edges_.resize(nf_, 3);
   area_.resize(nf_);
@@ -444,8 +445,7 @@ double NormalFilterRun::edge_pass() {
       lambda_.row(e) += o.relaxation * o.penalty * r;
       q_.row(e) = o.penalty * pe + lambda_.row(e);
       s[0] += len(e) * r.squaredNorm();
-      v_diag_(e) =
-          smooth_diag_(e) + len(e) * (2 * o.gamma * w_(e) * pe_norm + beta_e_(e) * o.beta / (2 * o.epsilon));
+      v_diag_(e) = smooth_diag_(e) + len(e) * (2 * o.gamma * w_(e) * pe_norm + beta_e_(e) * o.beta / (2 * o.epsilon));
       w_(e) = irla_weight(pe_norm, o);
     }
   })[0];
@@ -522,7 +522,8 @@ NormalFilterResult NormalFilterRun::run(const ProgressCallback& progress) {
     res_.residual_history.push_back(std::sqrt(std::max(0.0, resid2)));
     res_.change_history.push_back(change);
     if (o_.record_energy)
-      res_.energy_history.push_back(energy_normalised(ops_, in_input_order(N_), edges_in_input_order(v_), N0_, o_, face_alpha_, edge_beta_));
+      res_.energy_history.push_back(
+          energy_normalised(ops_, in_input_order(N_), edges_in_input_order(v_), N0_, o_, face_alpha_, edge_beta_));
     res_.iterations = k + 1;
 
     if (progress) {

@@ -210,8 +210,8 @@ PcgStats BlockPcg::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double re
   return solve_reordered<1>(b, x, relative_tolerance, max_iterations, what);
 }
 
-PcgStats BlockPcg::solve_in_order(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance,
-                                  int max_iterations, const std::string& what) const {
+PcgStats BlockPcg::solve_in_order(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance, int max_iterations,
+                                  const std::string& what) const {
   check_diagonal();
   return solve_permuted<3>(B.data(), X.data(), relative_tolerance, max_iterations, what);
 }

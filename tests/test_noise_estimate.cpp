@@ -65,7 +65,7 @@ TEST(NoiseEstimate, CleanMeshesHaveLittleAndImpulsiveNoiseShowsInTheRms) {
 TEST(NoiseEstimate, FineDetailIsToldApartFromNoise) {
   const Mesh bumps = bumpy_sphere();
   const NoiseEstimate clean = estimate_noise(bumps.V, bumps.F);
-  EXPECT_GT(clean.sigma, 0.05);  // the bumps read as noise to the single low pass ...
+  EXPECT_GT(clean.sigma, 0.05);                     // the bumps read as noise to the single low pass ...
   EXPECT_LT(clean.sigma_noise, 0.5 * clean.sigma);  // ... and mostly as shape to the two
   EXPECT_GT(clean.detail, 0.85 * clean.sigma);
   const NoiseEstimate low = estimate_noise(seeded(bumps, 0.1), bumps.F);

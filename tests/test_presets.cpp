@@ -186,8 +186,8 @@ TEST(Presets, AdaptiveOptionsFollowTheNoise) {
   EXPECT_NEAR(kept.vertices.omega3, plain.vertices.omega3 * (1 + 3 * 0.25), 1e-12);
   kept.vertices.omega3 = plain.vertices.omega3;
   expect_same_parameters(denoise_parameters(), kept, plain, "detail");
-  EXPECT_NEAR(adaptive_options("smooth", 0.0, 0.1).vertices.omega3, 10 * adaptive_options("smooth", 0.0).vertices.omega3,
-              1e-12);
+  EXPECT_NEAR(adaptive_options("smooth", 0.0, 0.1).vertices.omega3,
+              10 * adaptive_options("smooth", 0.0).vertices.omega3, 1e-12);
   expect_same_parameters(denoise_parameters(), adaptive_options("cad", 0.2, 0.1), adaptive_options("cad", 0.2), "cad");
   EXPECT_THROW(adaptive_options("organic", 0.3), InvalidInput);
   EXPECT_THROW(adaptive_options("cad", -1), InvalidInput);

@@ -2,9 +2,9 @@
 // conjugate gradients) give the same filtered normals and vertices, and the parallel loops
 // give bit-identical results whatever the number of threads (set_threads; its checks: test_threads.cpp; msmesh
 // --threads: cli/test_threads_cli.cpp).
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #ifdef _OPENMP
 #include <omp.h>

@@ -23,7 +23,8 @@ struct NoiseEstimate {
   /// sigma_noise reads 0–0.05.
   double sigma_noise = 0;
   double detail = 0;
-  std::string summary() const;  ///< "noise sigma 0.310 (rms 0.330, outliers 0.2 %; shape detail 0.050, noise alone 0.306)"
+  std::string summary()
+      const;  ///< "noise sigma 0.310 (rms 0.330, outliers 0.2 %; shape detail 0.050, noise alone 0.306)"
 };
 
 /// Estimates the noise of (V, F) (#V by 3, #F by 3). Throws InvalidInput for a bad mesh.
