@@ -189,7 +189,7 @@ def estimate_noise(V: ArrayLike, F: ArrayLike) -> Dict[str, Any]:
     noise), outlier_fraction (vertices beyond 4 sigma), sigma_noise and detail (sigma split
     into the noise alone and the shape's own fine detail and creases, which a low pass also
     removes: sigma**2 = sigma_noise**2 + detail**2) and summary (one line). 'auto' sets its
-    parameters from sigma_rms (docs/presets.md).
+    parameters from sigma_rms, for organic shapes without their detail (docs/presets.md).
     """
     V, F = _checks.mesh(V, F)
     return _core.estimate_noise(V, F)
