@@ -25,9 +25,8 @@ DespikeResult detail::despike_from(const Eigen::MatrixXd& V, const LowPassResidu
   d.reserve(static_cast<std::size_t>(V.rows()));
   for (Eigen::Index i = 0; i < V.rows(); ++i)
     if (lp.used[static_cast<std::size_t>(i)]) d.push_back(lp.residual(i));
-  const double m = detail::median_of(d);
-  for (double& x : d) x = std::abs(x - m);
-  const double sigma = detail::kMadToSigma * detail::median_of(d);
+  const detail::RobustSpread spread = detail::robust_spread(std::move(d));
+  const double m = spread.median, sigma = spread.sigma;
   // A vertex is a spike when it stands out by more than threshold σ, and by more than round-off
   // (σ is 0 on an exactly smooth mesh such as a plane).
   const double limit = std::max(threshold * sigma, 1e-9 * lp.mean_edge);

@@ -1,6 +1,7 @@
 #include "low_pass_residuals.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "msmesh/geometry.h"
 #include "msmesh/taubin.h"
@@ -33,6 +34,14 @@ double median_of(std::vector<double> x) {
   const auto mid = x.begin() + static_cast<std::ptrdiff_t>(x.size() / 2);
   std::nth_element(x.begin(), mid, x.end());
   return *mid;
+}
+
+RobustSpread robust_spread(std::vector<double> x) {
+  RobustSpread r;
+  r.median = median_of(x);
+  for (double& v : x) v = std::abs(v - r.median);
+  r.sigma = kMadToSigma * median_of(std::move(x));
+  return r;
 }
 
 }  // namespace msmesh::detail

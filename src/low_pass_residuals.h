@@ -35,4 +35,11 @@ DespikeResult despike_from(const Eigen::MatrixXd& V, const LowPassResiduals& lp,
 /// The median of x (the upper one for an even count); 0 for none.
 double median_of(std::vector<double> x);
 
+/// The median of x and its robust standard deviation, kMadToSigma × the median absolute
+/// deviation from it (the noise estimate's and the spike removal's measure).
+struct RobustSpread {
+  double median = 0, sigma = 0;
+};
+RobustSpread robust_spread(std::vector<double> x);
+
 }  // namespace msmesh::detail

@@ -30,12 +30,6 @@ constexpr double kOutlierSigmas = 4.0;
 constexpr double kNoiseGrowth = 1.372, kNoiseGrowthSlope = 0.13, kNoiseGrowthFrom = 0.28, kNoiseGrowthMax = 1.45;
 constexpr double kDetailGrowth = 2.0;
 
-double robust_sigma(std::vector<double> d) {
-  const double m = detail::median_of(d);
-  for (double& x : d) x = std::abs(x - m);
-  return detail::kMadToSigma * detail::median_of(d);
-}
-
 }  // namespace
 
 std::string NoiseEstimate::summary() const {
@@ -74,20 +68,20 @@ NoiseEstimate detail::estimate_noise_from(const LowPassResiduals& lp, const std:
       light.push_back(lp.light_residual(i) / scale);
     }
   if (d.empty()) return e;
-  const double m = detail::median_of(d);
+  const detail::RobustSpread spread = detail::robust_spread(d);
+  const double m = spread.median, mad = spread.sigma;
   std::vector<double> a(d.size());
   double sum2 = 0;
   for (std::size_t i = 0; i < d.size(); ++i) {
     a[i] = std::abs(d[i] - m);
     sum2 += a[i] * a[i];
   }
-  const double mad = detail::kMadToSigma * detail::median_of(a);
   e.sigma = mad / kCalibration;
   e.sigma_rms = std::sqrt(sum2 / static_cast<double>(d.size())) / kCalibration;
   std::size_t outliers = 0;
   for (const double x : a) outliers += x > kOutlierSigmas * mad;
   e.outlier_fraction = static_cast<double>(outliers) / static_cast<double>(d.size());
-  const double s3 = robust_sigma(std::move(light)), g2 = kDetailGrowth * kDetailGrowth;
+  const double s3 = detail::robust_spread(std::move(light)).sigma, g2 = kDetailGrowth * kDetailGrowth;
   const double rho =
       std::min(kNoiseGrowth + kNoiseGrowthSlope * std::max(0.0, mad - kNoiseGrowthFrom), kNoiseGrowthMax);
   const double n2 = std::clamp((g2 * s3 * s3 - mad * mad) / (g2 / (rho * rho) - 1), 0.0, mad * mad);
