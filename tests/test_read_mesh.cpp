@@ -15,6 +15,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@
 #include "msmesh/mesh_format.h"
 #include "msmesh/read_mesh.h"
 #include "msmesh/shapes.h"
+#include "msmesh/threads.h"
 #include "msmesh/write_mesh.h"
 #include "test_helpers.h"
 
@@ -285,6 +287,64 @@ TEST(ReadBinaryStl, WeldsInFirstAppearanceOrderAndDropsTrianglesRepeatingAVertex
   const float inf = std::numeric_limits<float>::infinity();
   write_bytes(dir.file("inf.stl"), binary_stl({{0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 0, 1, 0, 0, 0, inf, 0}}));
   expect_read_error(dir.file("inf.stl"), "triangle 1 has a non-finite vertex coordinate");
+}
+
+TEST(ReadBinaryStl, WeldsAsAnIndependentWelderAtEveryThreadCount) {
+  // A large shuffled file (81920 triangles, first appearance is not face order): the numbers,
+  // the dropped triangles and the first non-finite triangle named must be those of an
+  // independent welder (std::map, first appearance, -0 = +0), with one thread and with two.
+  const Mesh sphere = make_sphere(6);  // 81920 faces
+  std::vector<std::array<float, 9>> tris;
+  for (Eigen::Index f = 0; f < sphere.F.rows(); ++f) {
+    std::array<float, 9> t;
+    for (int k = 0; k < 3; ++k)
+      for (int c = 0; c < 3; ++c) t[3 * k + c] = static_cast<float>(sphere.V(sphere.F(f, k), c));
+    tris.push_back(t);
+  }
+  std::uint32_t state = 12345;
+  for (std::size_t i = tris.size() - 1; i > 0; --i) {  // a fixed shuffle: first appearance is not face order
+    state = state * 1664525u + 1013904223u;
+    std::swap(tris[i], tris[state % (i + 1)]);
+  }
+  tris[1000] = {0, 0, 0, -0.f, 0, 0, 1, 1, 1};  // repeats a vertex after welding: dropped
+  tris[2000] = {-0.f, 0, 0, 1, 1, 1, 2, 0, 0};
+  std::map<std::array<float, 3>, int> number;
+  std::vector<std::array<float, 3>> points;
+  std::vector<std::array<int, 3>> faces;
+  for (const auto& t : tris) {
+    std::array<int, 3> id;
+    for (int k = 0; k < 3; ++k) {
+      std::array<float, 3> q = {t[3 * k] + 0.0f, t[3 * k + 1] + 0.0f, t[3 * k + 2] + 0.0f};  // -0 + 0 = +0
+      const auto it = number.emplace(q, static_cast<int>(points.size())).first;
+      if (it->second == static_cast<int>(points.size())) points.push_back({t[3 * k], t[3 * k + 1], t[3 * k + 2]});
+      id[k] = it->second;
+    }
+    if (id[0] != id[1] && id[1] != id[2] && id[0] != id[2]) faces.push_back(id);
+  }
+  TempDir dir;
+  write_bytes(dir.file("big.stl"), binary_stl(tris));
+  auto nan_tris = tris;
+  nan_tris[50000][4] = std::numeric_limits<float>::quiet_NaN();
+  nan_tris[40000][8] = std::numeric_limits<float>::infinity();
+  write_bytes(dir.file("big_nan.stl"), binary_stl(nan_tris));
+  const int before = threads();
+  for (const int n : {1, 2}) {
+    SCOPED_TRACE(n);
+    set_threads(n);
+    ReadNotes notes;
+    const Mesh m = read_mesh(dir.file("big.stl"), notes);
+    ASSERT_EQ(m.V.rows(), static_cast<Eigen::Index>(points.size()));
+    ASSERT_EQ(m.F.rows(), static_cast<Eigen::Index>(faces.size()));
+    EXPECT_EQ(notes.dropped_degenerate, static_cast<Eigen::Index>(tris.size() - faces.size()));
+    bool same = true;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      for (int c = 0; c < 3; ++c) same = same && m.V(static_cast<Eigen::Index>(i), c) == points[i][c];
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      for (int k = 0; k < 3; ++k) same = same && m.F(static_cast<Eigen::Index>(f), k) == faces[f][k];
+    EXPECT_TRUE(same);
+    expect_read_error(dir.file("big_nan.stl"), "triangle 40000 has a non-finite vertex coordinate");
+  }
+  set_threads(before);
 }
 
 TEST(ReadBinary, LargeFilesAreMappedAndReadAsFromMemory) {
