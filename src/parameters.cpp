@@ -218,6 +218,9 @@ const ParameterTable<VertexUpdateOptions>& vertex_update_parameters() {
       field(real("vertex-tolerance", "ε₂", "mean edge lengths", non_negative(),
                  "stop the vertex update when the RMS vertex move is below this", kVertices),
             &O::tolerance),
+      field(integer("vertex-acceleration", "", closed(0, 20),
+                    "Anderson acceleration depth of the vertex update (0: the paper's plain alternation)", kVertices),
+            &O::acceleration),
       field(solver_tolerance_info(), &O::solver_tolerance),
   };
   return t;
