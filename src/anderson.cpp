@@ -54,7 +54,8 @@ void AndersonAcceleration::step(const RowMatrixX3& g, RowMatrixX3& x) {
   Eigen::VectorXd rhs(m);
   for (int a = 0; a < m; ++a) {
     rhs(a) = dot(df_[static_cast<size_t>(a)], f_previous_);
-    for (int b = 0; b <= a; ++b) gram(a, b) = gram(b, a) = dot(df_[static_cast<size_t>(a)], df_[static_cast<size_t>(b)]);
+    for (int b = 0; b <= a; ++b)
+      gram(a, b) = gram(b, a) = dot(df_[static_cast<size_t>(a)], df_[static_cast<size_t>(b)]);
   }
   gram.diagonal().array() += 1e-10 * gram.diagonal().maxCoeff() + 1e-300;
   const Eigen::VectorXd theta = gram.ldlt().solve(rhs);

@@ -293,9 +293,9 @@ void NormalFilterRun::assemble_n_step() {
   constexpr Eigen::Index kCgMinFaces = 80000;
   constexpr double kCgMaxPenaltyPerAlpha = 0.2;
   const bool well_conditioned = o_.penalty <= kCgMaxPenaltyPerAlpha * o_.alpha;
-  const bool use_cg = o_.solver == LinearSolver::CG ||
-                      (o_.solver == LinearSolver::Auto && (nf_ >= kCgMinFaces || well_conditioned) &&
-                       face_alpha_.minCoeff() >= 0.5);
+  const bool use_cg =
+      o_.solver == LinearSolver::CG ||
+      (o_.solver == LinearSolver::Auto && (nf_ >= kCgMinFaces || well_conditioned) && face_alpha_.minCoeff() >= 0.5);
   n_system_.emplace(A, use_cg, "normal filtering (N-step)");
 
   // Gᵀ L per face: face f meets edge face_edges(f,k) with sign gt_sign(f,k) (+1 when f is the

@@ -116,7 +116,7 @@ DenoiseOptions preset_options(const std::string& name) {
     o.normals.penalty = 1.0;
     o.normals.project_each_iteration = true;
     o.vertices.tolerance = 1e-6;
-    o.vertices.acceleration = 0;  // Algorithm 2's plain alternation
+    o.vertices.acceleration = 0;                                      // Algorithm 2's plain alternation
     o.normals.solver_tolerance = o.vertices.solver_tolerance = 1e-8;  // exact solves, as the paper's
     return o;
   }

@@ -231,8 +231,8 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
   // vertices move).
   constexpr Eigen::Index kCgMinVertices = 40000, kCgMinVerticesAccelerated = 10000;
   const bool few_steps = o.acceleration > 0 && nv >= kCgMinVerticesAccelerated && weights.vertex_omega3.size() == 0;
-  const bool use_cg = o.solver == LinearSolver::CG || (o.solver == LinearSolver::Auto &&
-                                                       (nv >= kCgMinVertices || few_steps) && w3.minCoeff() >= 0.5);
+  const bool use_cg = o.solver == LinearSolver::CG ||
+                      (o.solver == LinearSolver::Auto && (nv >= kCgMinVertices || few_steps) && w3.minCoeff() >= 0.5);
   // The edge quads and the assembled matrix are freed before the iterations' arrays are
   // allocated (CG keeps its own reordered copy): ~80 + ~150 MB less at a million faces.
   std::optional<SparseMatrix> A_v(v_step_matrix(F, vc, eq, d3, o));

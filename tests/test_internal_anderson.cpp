@@ -56,7 +56,7 @@ TEST(InternalAnderson, ReachesThePlainIterationsFixedPointInFarFewerSteps) {
   const int fast_steps = iterate(G, &aa, fast, 1e-10, 2000);
   EXPECT_LT((plain - truth).norm(), 1e-8);
   EXPECT_LT((fast - truth).norm(), 1e-8);
-  EXPECT_GT(plain_steps, 300);  // 0.95^k < 1e-11 takes ~490 steps
+  EXPECT_GT(plain_steps, 300);             // 0.95^k < 1e-11 takes ~490 steps
   EXPECT_LT(fast_steps, plain_steps / 3);  // measured: 432 against 90 at depth 5
 }
 
