@@ -12,6 +12,7 @@
 #include "msmesh/operators.h"
 #include "msmesh/parameters.h"
 #include "msmesh/topology.h"
+#include "normal_polish.h"
 #include "normalize.h"
 #include "parallel.h"
 #include "pcg.h"
@@ -558,7 +559,9 @@ NormalFilterResult filter_normals(const PreparedMesh& mesh, const NormalFilterOp
                                   const Eigen::MatrixXd& normals0) {
   o.validate();
   if (mesh.num_faces() == 0) throw InvalidInput("normal filtering: the mesh has no faces");
-  return NormalFilterRun(mesh, o, weights, normals0).run(progress);
+  NormalFilterResult r = NormalFilterRun(mesh, o, weights, normals0).run(progress);
+  if (o.polish > 0) r.normals = detail::polish_normals(mesh, r.normals, r.v, o.polish, o.polish_range);
+  return r;
 }
 
 }  // namespace msmesh

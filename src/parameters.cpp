@@ -201,6 +201,14 @@ const ParameterTable<NormalFilterOptions>& normal_filter_parameters() {
                     "the end)",
                     kNormals),
             &O::project_each_iteration),
+      field(real("polish", "λ", "", non_negative(),
+                 "weight of the final bilateral polish of the filtered normals, guided by them and masked by v (0: "
+                 "none, as the paper)",
+                 kNormals),
+            &O::polish),
+      field(real("polish-range", "σ_p", "", positive(),
+                 "range width of the polish: normals further apart than about twice this are not averaged", kNormals),
+            &O::polish_range),
       field(solver_tolerance_info(), &O::solver_tolerance),
   };
   return t;

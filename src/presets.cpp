@@ -66,6 +66,13 @@ constexpr double kDetailCloseness = 3.0, kDetailMaxGain = 10.0, kDetailDoubt = 0
 //   read 4–9 % outliers and σ_rms >= 0.217; the outliers of low-noise CAD parts (3–9 %, σ_rms up to
 //   0.13; a clean coarse fandisk: 0.18) are their creases, which despiking would round off.
 constexpr double kDespikeFromOutliers = 0.03, kDespikeFromSigmaRms = 0.2, kDespikeThreshold = 3.0;
+//   The polish of the filtered normals (class cad; NormalFilterOptions::polish): λ = preset cad's
+//   3 × clamp(σ / kPolishFullSigma, kPolishMinShare, 1) and range clamp(kPolishRangePerSigma σ,
+//   kPolishRangeMin, preset cad's 0.3): what the fidelity term leaves of the noise, and how far
+//   apart it leaves neighbouring normals, both shrink with σ, while the bias of averaging over a
+//   curved part does not (docs/presets.md, "The polish"; at σ 0.05 the full polish lost on CAD
+//   parts with seeded noise, up to 1.36x, and on the dragon, which auto classes cad, 1.21x).
+constexpr double kPolishFullSigma = 0.2, kPolishMinShare = 0.25, kPolishRangePerSigma = 1.5, kPolishRangeMin = 0.15;
 
 // Meshes above kSampleAboveFaces faces are measured on kSamplePatches patches of
 // kSamplePatchFaces faces, away from the cuts by kSampleMargin rings (about as far as the
@@ -105,6 +112,7 @@ DenoiseOptions preset_options(const std::string& name) {
     o.normals.penalty = 0.1;  // slow ADMM = 30 iterations stop well short of the TV staircase
     o.vertices.omega2 = 0.3;
     o.vertices.omega3 = 0.3;
+    o.normals.polish = 0;  // averages the detail of organic shapes away (docs/presets.md, "The polish")
     return o;
   }
   if (name == "paper") {
@@ -117,6 +125,7 @@ DenoiseOptions preset_options(const std::string& name) {
     o.normals.project_each_iteration = true;
     o.vertices.tolerance = 1e-6;
     o.vertices.acceleration = 0;                                      // Algorithm 2's plain alternation
+    o.normals.polish = 0;                                             // Algorithm 1's normals as they come
     o.normals.solver_tolerance = o.vertices.solver_tolerance = 1e-8;  // exact solves, as the paper's
     return o;
   }
@@ -135,6 +144,10 @@ DenoiseOptions adaptive_options(const std::string& shape_class, double sigma, do
   o.prefilter_iterations = prefilter_for(sigma);
   if (shape_class == "smooth")
     o.vertices.omega2 *= std::clamp((sigma - kFairnessFrom) / kFairnessSpan, kFairnessMinShare, 1.0);
+  if (shape_class == "cad") {
+    o.normals.polish *= std::clamp(sigma / kPolishFullSigma, kPolishMinShare, 1.0);
+    o.normals.polish_range = std::clamp(kPolishRangePerSigma * sigma, kPolishRangeMin, o.normals.polish_range);
+  }
   const double closeness = sigma > 0 ? kClosenessSigma / sigma : 1e300;
   o.vertices.omega3 *= std::clamp(closeness * closeness, 1.0, kClosenessMaxGain);
   if (shape_class == "smooth" && detail > 0) {
@@ -275,7 +288,11 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   return r;
 }
 
-NormalFilterOptions segment_normal_options() { return preset_options("cad").normals; }
+NormalFilterOptions segment_normal_options() {
+  NormalFilterOptions o = preset_options("cad").normals;
+  o.polish = 0;  // segmentation reads v; the polish only changes N (not measured there)
+  return o;
+}
 
 NormalFilterOptions inpaint_normal_options() {
   NormalFilterOptions o;
@@ -288,6 +305,7 @@ NormalFilterOptions inpaint_normal_options() {
   // from shrinking towards their average across a crease (the relaxed problem is then a
   // vector TV whose minimiser blends the two sides): project after every N-step, as the paper.
   o.project_each_iteration = true;
+  o.polish = 0;  // not measured on holes
   return o;
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
 #include "msmesh/errors.h"
@@ -159,6 +160,14 @@ TEST(Presets, AdaptiveOptionsFollowTheNoise) {
       EXPECT_LE(o.vertices.omega3, last) << cls << " " << sigma;
       last = o.vertices.omega3;
       p.vertices.omega3 = o.vertices.omega3;
+      // The polish (cad only) grows with σ up to preset cad's, never below a quarter of it; its
+      // range too, between 0.15 and preset cad's 0.3.
+      EXPECT_LE(o.normals.polish, p.normals.polish) << cls << " " << sigma;
+      EXPECT_GE(o.normals.polish, 0.25 * p.normals.polish) << cls << " " << sigma;
+      EXPECT_LE(o.normals.polish_range, p.normals.polish_range) << cls << " " << sigma;
+      EXPECT_GE(o.normals.polish_range, std::min(0.15, p.normals.polish_range)) << cls << " " << sigma;
+      p.normals.polish = o.normals.polish;
+      p.normals.polish_range = o.normals.polish_range;
       expect_same_parameters(denoise_parameters(), o, p, std::string(cls) + " at " + std::to_string(sigma));
     }
     const DenoiseOptions o = adaptive_options("cad", sigma);
@@ -179,6 +188,14 @@ TEST(Presets, AdaptiveOptionsFollowTheNoise) {
     EXPECT_DOUBLE_EQ(adaptive_options(cls, 0.5).vertices.omega3, omega3) << cls;  // the class's from σ 0.13 up
   }
   EXPECT_GT(adaptive_options("cad", 0.6).prefilter_iterations, 0);
+  // The polish: the full one from σ 0.2, a quarter below σ 0.05, none for the class smooth.
+  EXPECT_DOUBLE_EQ(adaptive_options("cad", 0.3).normals.polish, preset_options("cad").normals.polish);
+  EXPECT_DOUBLE_EQ(adaptive_options("cad", 0.3).normals.polish_range, 0.3);
+  EXPECT_DOUBLE_EQ(adaptive_options("cad", 0.1).normals.polish, 0.5 * preset_options("cad").normals.polish);
+  EXPECT_DOUBLE_EQ(adaptive_options("cad", 0.1).normals.polish_range, 0.15);
+  EXPECT_DOUBLE_EQ(adaptive_options("cad", 0.0).normals.polish, 0.25 * preset_options("cad").normals.polish);
+  EXPECT_EQ(adaptive_options("smooth", 0.3).normals.polish, 0.0);
+  EXPECT_EQ(preset_options("paper").normals.polish, 0.0);
   // The shape's own detail raises the closeness of the class smooth by 1 + 3 (d/σ)², at most 10×,
   // and changes nothing else; the class cad ignores it (its detail is its creases).
   const DenoiseOptions plain = adaptive_options("smooth", 0.2);

@@ -42,6 +42,14 @@ struct NormalFilterOptions {
   /// of a denoise agree with those at 1e-8 (and with the Cholesky path) to four digits, in a
   /// third fewer sweeps (docs/performance.md, "Solver tolerance"); 1e-8 for exact comparisons.
   double solver_tolerance = 1e-6;
+  /// λ ≥ 0 of the polish after the last iteration (src/normal_polish.h): one implicit step of a
+  /// joint bilateral filter guided by the filtered normals and masked by v, which flattens the
+  /// noise the fidelity term leaves on flat and smoothly curved parts. 0: none, as the paper;
+  /// preset cad 3 (docs/presets.md, "The polish").
+  double polish = 3.0;
+  /// σ > 0 of the polish's range weight exp(−‖N_i − N_j‖² / 2σ²): normals further apart than
+  /// about 2σ (a crease of ~35° at 0.3) are not averaged.
+  double polish_range = 0.3;
   /// Throws InvalidInput naming the parameter, its value and the valid range.
   void validate() const;
 };

@@ -1,0 +1,60 @@
+#include "normal_polish.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "msmesh/topology.h"
+#include "parallel.h"
+#include "pcg.h"
+#include "sparse_build.h"
+
+namespace msmesh::detail {
+
+Eigen::MatrixXd polish_normals(const PreparedMesh& mesh, const Eigen::MatrixXd& N, const Eigen::VectorXd& v,
+                               double weight, double range) {
+  const Topology& topo = mesh.topology();
+  const Eigen::MatrixXd& P = mesh.positions();
+  const Eigen::Index nf = mesh.num_faces(), ne = topo.num_edges();
+  // The weight of each interior edge, from the unpolished normals.
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(ne);
+  const double inv_two_sigma2 = 1.0 / (2 * range * range);
+  parallel_for(ne, [&](Eigen::Index e) {
+    if (!topo.edge_is_interior[e]) return;
+    const double ve = std::clamp(v(e), 0.0, 1.0);
+    const double d2 = (N.row(topo.edge_faces(e, 0)) - N.row(topo.edge_faces(e, 1))).squaredNorm();
+    const double len = (P.row(topo.edges(e, 0)) - P.row(topo.edges(e, 1))).norm();
+    w(e) = weight * ve * ve * std::exp(-d2 * inv_two_sigma2) * len;
+  });
+  // I + (the face-graph Laplacian of w): symmetric, diagonally dominant (κ ≤ 1 + 6 λ max len).
+  const Eigen::SparseMatrix<double> A = symmetric_from_rows(
+      nf, [](Eigen::Index) { return 4; },
+      [&](Eigen::Index f, int* col, double* val) {
+        int n = 1;
+        double diag = 1.0;
+        for (int k = 0; k < 3; ++k) {
+          const int e = topo.face_edges(f, k);
+          if (!topo.edge_is_interior[e]) continue;
+          const int g = topo.edge_faces(e, 0) == f ? topo.edge_faces(e, 1) : topo.edge_faces(e, 0);
+          diag += w(e);
+          col[n] = g;
+          val[n++] = -w(e);
+        }
+        col[0] = static_cast<int>(f);
+        val[0] = diag;
+        return n;
+      });
+  // Conjugate gradients from N, to a tight residual (a few dozen sweeps: the result is the
+  // same to round-off whatever the mesh's orientation).
+  const BlockPcg pcg(A);
+  const RowMatrixX3 B = N;
+  RowMatrixX3 X = N;
+  pcg.solve(B, X, 1e-10, 10000, "normal polish");
+  Eigen::MatrixXd out(nf, 3);
+  parallel_for(nf, [&](Eigen::Index f) {
+    const double n = X.row(f).norm();
+    out.row(f) = n > 0 ? Eigen::RowVector3d(X.row(f) / n) : Eigen::RowVector3d(N.row(f));
+  });
+  return out;
+}
+
+}  // namespace msmesh::detail
