@@ -107,6 +107,21 @@ def _capacity(client) -> Dict[str, Any]:
             "threads": sum(w.get("nthreads", 1) for w in info.values()) or 1}
 
 
+def _outcome(future):
+    """The task's outcome dict, or a failed one naming the error. A future that is done without
+    an error nor a result lost its result with its worker (killed after the task finished):
+    Dask computes it again for a client that still holds the future, so wait for that."""
+    if future.status == "finished":
+        return future.result()
+    error = future.exception()
+    if error is None:
+        try:
+            return future.result()
+        except Exception as e:  # noqa: BLE001 (any error of the task or the cluster is reported)
+            error = e
+    return {"status": "failed", "error": f"the task failed on the cluster: {type(error).__name__}: {error}"}
+
+
 def run(command: str, inputs: Sequence[str], output_dir: str, options: Sequence[str] = (), *,
         truth: Optional[str] = None, scheduler: Optional[str] = None, client=None, workers: Optional[int] = None,
         memory_limit: Optional[int] = None, threads_per_task: Optional[int] = None, force: bool = False,
@@ -220,12 +235,7 @@ def run(command: str, inputs: Sequence[str], output_dir: str, options: Sequence[
             try:
                 for future in as_completed(list(futures)):
                     spec = futures[future]
-                    if future.status == "finished":
-                        outcome = future.result()
-                    else:
-                        error = future.exception()
-                        outcome = {"status": "failed", "error": f"the task failed on the cluster: "
-                                   f"{type(error).__name__}: {error}"}
+                    outcome = _outcome(future)
                     record = _record(spec, outcome)
                     with lock:
                         records[spec["index"]] = record
