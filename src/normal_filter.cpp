@@ -6,6 +6,7 @@
 #include <sstream>
 #include <utility>
 
+#include "face_graph_matrix.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
@@ -266,24 +267,9 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
 void NormalFilterRun::assemble_n_step() {
   // Row f: its fidelity weight plus r·len(e) on the diagonal for each interior edge e of f,
   // −r·len(e) towards the face across e.
-  const SparseMatrix A = detail::symmetric_from_rows(
-      nf_, [](Eigen::Index) { return 4; },
-      [&](Eigen::Index f, int* col, double* val) {
-        int n = 1;
-        double diag = fid_weight_(f);
-        for (int k = 0; k < 3; ++k) {
-          const int e = topo_.face_edges(f, k);
-          if (!topo_.edge_is_interior[e]) continue;
-          const int g = topo_.edge_faces(e, 0) == f ? topo_.edge_faces(e, 1) : topo_.edge_faces(e, 0);
-          const double w = o_.penalty * ops_.edge_lengths(e);
-          diag += w;
-          col[n] = g;
-          val[n++] = -w;
-        }
-        col[0] = static_cast<int>(f);
-        val[0] = diag;
-        return n;
-      });
+  const SparseMatrix A = detail::face_graph_matrix(
+      topo_, nf_, [&](Eigen::Index f) { return fid_weight_(f); },
+      [&](int e) { return o_.penalty * ops_.edge_lengths(e); });
   // Auto: the factorisation below kCgMinFaces faces (cheap there, and exact), conjugate
   // gradients above (linear cost, where the factor grows like n^1.5), unless per-face α
   // weights switch the fidelity off somewhere (inpainting): the matrix then loses its

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "face_graph_matrix.h"
 #include "msmesh/topology.h"
 #include "parallel.h"
 #include "pcg.h"
-#include "sparse_build.h"
 
 namespace msmesh::detail {
 
@@ -26,23 +26,8 @@ Eigen::MatrixXd polish_normals(const PreparedMesh& mesh, const Eigen::MatrixXd& 
     w(e) = weight * ve * ve * std::exp(-d2 * inv_two_sigma2) * len;
   });
   // I + (the face-graph Laplacian of w): symmetric, diagonally dominant (κ ≤ 1 + 6 λ max len).
-  const Eigen::SparseMatrix<double> A = symmetric_from_rows(
-      nf, [](Eigen::Index) { return 4; },
-      [&](Eigen::Index f, int* col, double* val) {
-        int n = 1;
-        double diag = 1.0;
-        for (int k = 0; k < 3; ++k) {
-          const int e = topo.face_edges(f, k);
-          if (!topo.edge_is_interior[e]) continue;
-          const int g = topo.edge_faces(e, 0) == f ? topo.edge_faces(e, 1) : topo.edge_faces(e, 0);
-          diag += w(e);
-          col[n] = g;
-          val[n++] = -w(e);
-        }
-        col[0] = static_cast<int>(f);
-        val[0] = diag;
-        return n;
-      });
+  const Eigen::SparseMatrix<double> A = face_graph_matrix(
+      topo, nf, [](Eigen::Index) { return 1.0; }, [&](int e) { return w(e); });
   // Conjugate gradients from N, to a tight residual (a few dozen sweeps: the result is the
   // same to round-off whatever the mesh's orientation).
   const BlockPcg pcg(A);
