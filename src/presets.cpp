@@ -213,9 +213,12 @@ std::string ResolvedPreset::reason() const {
                                        fixed(options.despike_threshold, 1) + " sigma, then " + noise_despiked.summary()
                                  : "";
   const std::string detail = preset == "smooth" ? ", sigma without the detail " + fixed(sigma, 3) : "";
+  const std::string polish = options.normals.polish > 0 ? ", polish " + fixed(options.normals.polish, 2) + " (range " +
+                                                              fixed(options.normals.polish_range, 2) + ")"
+                                                        : "";
   return "chosen automatically (" + sampled + noise.summary() + spikes + s + detail + ": alpha " +
-         fixed(options.normals.alpha, 2) + ", prefilter " + std::to_string(options.prefilter_iterations) + "; " +
-         choice.reason + ")";
+         fixed(options.normals.alpha, 2) + ", prefilter " + std::to_string(options.prefilter_iterations) + polish +
+         "; " + choice.reason + ")";
 }
 
 ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
