@@ -220,19 +220,19 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
   const VertexCorners vc = vertex_corners(F, nv);
   EdgeQuads eq = o.omega2 > 0 ? edge_quads(F, topo, v, nv) : EdgeQuads{};
   // Auto: the factorisation below kCgMinVertices vertices (cheap there, and exact), conjugate
-  // gradients above (linear cost; κ is bounded by about (6ω₁ + 16ω₂ + ω₃)/ω₃), unless
-  // per-vertex weights lower ω₃ somewhere (inpainting: new vertices are free), which makes
-  // the system badly conditioned: then factor it at any size (docs/performance.md). The
-  // accelerated alternation needs 6–11 V-steps instead of up to 30, too few to pay for a
-  // factorisation: CG from kCgMinVerticesAccelerated there (Cone 0.24 → 0.18 s, GNF bunny
-  // 0.63 → 0.14 s; below, the factorisation costs a few ms and keeps the result exact, hence
-  // invariant under rotation to round-off), unless per-vertex weights are given (a pinned
-  // vertex's huge ω₃ would dominate CG's relative residual, which then stops before the other
-  // vertices move).
+  // gradients above (linear cost; κ is bounded by about (6ω₁ + 16ω₂ + ω₃)/ω₃). The accelerated
+  // alternation needs 6–11 V-steps instead of up to 30, too few to pay for a factorisation: CG
+  // from kCgMinVerticesAccelerated there (Cone 0.24 → 0.18 s, GNF bunny 0.63 → 0.14 s; below,
+  // the factorisation costs a few ms and keeps the result exact, hence invariant under rotation
+  // to round-off). Either way only with moderate per-vertex weights: where they lower ω₃
+  // (inpainting: new vertices are free) the system is badly conditioned, and where they raise it
+  // far (a pinned vertex) that vertex dominates CG's relative residual, which then stops before
+  // the others move; such systems are factored at any size (docs/performance.md).
   constexpr Eigen::Index kCgMinVertices = 40000, kCgMinVerticesAccelerated = 10000;
-  const bool few_steps = o.acceleration > 0 && nv >= kCgMinVerticesAccelerated && weights.vertex_omega3.size() == 0;
-  const bool use_cg = o.solver == LinearSolver::CG ||
-                      (o.solver == LinearSolver::Auto && (nv >= kCgMinVertices || few_steps) && w3.minCoeff() >= 0.5);
+  constexpr double kCgMinWeight = 0.5, kCgMaxWeight = 10.0;
+  const bool moderate_weights = w3.minCoeff() >= kCgMinWeight && w3.maxCoeff() <= kCgMaxWeight;
+  const bool large = nv >= kCgMinVertices || (o.acceleration > 0 && nv >= kCgMinVerticesAccelerated);
+  const bool use_cg = o.solver == LinearSolver::CG || (o.solver == LinearSolver::Auto && large && moderate_weights);
   // The edge quads and the assembled matrix are freed before the iterations' arrays are
   // allocated (CG keeps its own reordered copy): ~80 + ~150 MB less at a million faces.
   std::optional<SparseMatrix> A_v(v_step_matrix(F, vc, eq, d3, o));

@@ -110,7 +110,8 @@ TEST(Solver, ConjugateGradientsMatchCholeskyInTheVertexUpdate) {
 
 TEST(Solver, AutoUsesConjugateGradientsOnLargeMeshesUnlessWeightsSwitchTheDataTermOff) {
   // Inpainting gives new vertices ω₃ ≈ 0: the system is then badly conditioned and Auto
-  // factors it; with plain weights Auto uses conjugate gradients from 40K vertices.
+  // factors it; with plain weights Auto uses conjugate gradients from 40K vertices (10K when
+  // accelerated).
   const Mesh m = test::noisy_cube(82);  // 80688 faces, 40346 vertices
   ASSERT_GT(m.V.rows(), 40000);
   const Eigen::MatrixXd N = face_normals(make_cube(82).V, m.F);
@@ -121,6 +122,12 @@ TEST(Solver, AutoUsesConjugateGradientsOnLargeMeshesUnlessWeightsSwitchTheDataTe
   EXPECT_FALSE(update_vertices(m.V, m.F, N, {}, o, w).solver_iterations.empty());
   w.vertex_omega3(0) = 0;
   EXPECT_TRUE(update_vertices(m.V, m.F, N, {}, o, w).solver_iterations.empty());
+  // A pinned vertex (huge ω₃) would dominate CG's relative residual: factored too, and it moves
+  // the others.
+  w.vertex_omega3(0) = 1e9;
+  const VertexUpdateResult pinned = update_vertices(m.V, m.F, N, {}, o, w);
+  EXPECT_TRUE(pinned.solver_iterations.empty());
+  EXPECT_GT((pinned.V - m.V).rowwise().norm().maxCoeff(), 1e-3 * mean_edge_length(m.V, m.F));
   NormalFilterOptions no;
   no.max_iterations = 2;
   EXPECT_FALSE(filter_normals(m.V, m.F, no).n_solver_iterations.empty());
