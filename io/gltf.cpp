@@ -373,6 +373,16 @@ void read_gltf(const std::string& path, std::string_view data, bool glb, Soup& s
       std::vector<std::size_t> idx;
       const auto ind = prim.indices;
       if (ind >= 0) {
+        // glTF 2.0 §3.7.2.1: indices are unsigned bytes, shorts or ints, never floats or normalized.
+        if (ind < static_cast<int>(model.accessors.size())) {
+          const Accessor& ia = model.accessors[static_cast<std::size_t>(ind)];
+          const int t = ia.componentType;
+          if ((t != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE && t != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+               t != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) ||
+              ia.normalized)
+            throw IoError(path + ": glTF indices accessor " + std::to_string(ind) +
+                          " does not hold unsigned integers (componentType " + std::to_string(t) + ")");
+        }
         int ic = 0;
         const std::vector<double> I = read_accessor(path, model, ind, ic, "indices");
         if (ic != 1) throw IoError(path + ": glTF indices accessor " + std::to_string(ind) + " is not SCALAR");
