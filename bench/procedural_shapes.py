@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Denoising defaults on noise that is not in ../shared: msmesh's procedural shapes, A against B.
 
-    /usr/bin/python3 bench/procedural_shapes.py [--msmesh build/msmesh] [--a "--polish 0"] [--b ""]
+    /usr/bin/python3 bench/procedural_shapes.py [--msmesh build/msmesh] [--a "--polish 0"] [--b ""] [--fine]
 
 `msmesh shape NAME -r R` for cube 24, fandisk 32, pyramid 32, cylinder 32, torus 32 and sphere 16
 (2.4K-31K faces; cube, fandisk and pyramid have creases and flat parts, the others are smooth),
@@ -11,6 +11,9 @@ directions), each denoised twice by `msmesh denoise IN -o OUT` plus the argument
 clean shape. Prints a markdown table of MSAE x1e-3, the class `auto` chose, the ratio B / A, the
 geometric means and the cases where B is worse by more than 1 %. docs/presets.md, "The polish",
 used it; `--msmesh OLD --msmesh NEW` with --a "" --b "" compares two builds instead.
+--fine: the same shapes finer (cube 64, fandisk, pyramid, cylinder and torus 80, sphere 64;
+49K-192K faces, √area / mean edge 138-264) at S in 0.1 0.3 0.5, where the shape class once read
+fine smooth surfaces as flat (docs/presets.md, "The flat test at any resolution").
 """
 import argparse
 import math
@@ -27,6 +30,8 @@ import scoring  # noqa: E402
 
 SHAPES = (("cube", 24), ("fandisk", 32), ("pyramid", 32), ("cylinder", 32), ("torus", 32), ("sphere", 16))
 SIGMAS = (0.05, 0.1, 0.2, 0.3, 0.5, 0.7)
+FINE_SHAPES = (("cube", 64), ("fandisk", 80), ("pyramid", 80), ("cylinder", 80), ("torus", 80), ("sphere", 64))
+FINE_SIGMAS = (0.1, 0.3, 0.5)
 
 
 def denoise(exe, noisy, clean, args, folder):
@@ -42,6 +47,7 @@ def main():
     ap.add_argument("--msmesh", action="append", default=[], help="msmesh executable (twice: A's and B's)")
     ap.add_argument("--a", default="--polish 0", help="arguments of run A (default: %(default)s)")
     ap.add_argument("--b", default="", help="arguments of run B (default: none, the defaults)")
+    ap.add_argument("--fine", action="store_true", help="finer shapes (49K-192K faces), sigma 0.1 0.3 0.5")
     args = ap.parse_args()
     exes = args.msmesh or [os.path.join(ROOT, "build", "msmesh")]
     exe_a, exe_b = exes[0], exes[-1]
@@ -54,12 +60,12 @@ def main():
     print("|---|---:|---|---:|---|---:|---:|---:|")
     logs_a, logs_b, worse, cases = [], [], [], 0
     with tempfile.TemporaryDirectory() as tmp:
-        for name, resolution in SHAPES:
+        for name, resolution in FINE_SHAPES if args.fine else SHAPES:
             clean = os.path.join(tmp, f"{name}.obj")
             scoring.run([exe_a, "shape", name, "-r", str(resolution), "-o", clean, "-q"])
             faces = scoring.run([exe_a, "info", clean])[0].split("faces:")[1].split()[0]
             for direction in ("normal", "random"):
-                for sigma in SIGMAS:
+                for sigma in FINE_SIGMAS if args.fine else SIGMAS:
                     noisy = os.path.join(tmp, "noisy.obj")
                     scoring.run([exe_a, "noise", clean, "-o", noisy, "--sigma", str(sigma), "--direction", direction,
                                  "--seed", "17", "-q"])
