@@ -19,6 +19,7 @@
 #include "pcg.h"
 #include "sparse_build.h"
 #include "sparse_solve.h"
+#include "unit_rows.h"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -68,17 +69,6 @@ Eigen::VectorXd ones_or(const Eigen::VectorXd& w, Eigen::Index n, const char* wh
       throw InvalidInput(os.str());
     }
   return w;
-}
-
-// Scales every row of N to unit length; a zero or non-finite row takes the row of `fallback`.
-void normalize_rows(detail::RowMatrixX3& N, const detail::RowMatrixX3& fallback) {
-  detail::parallel_for(N.rows(), [&](Eigen::Index f) {
-    const double l = N.row(f).norm();
-    if (l > 0 && std::isfinite(l))
-      N.row(f) /= l;
-    else
-      N.row(f) = fallback.row(f);
-  });
 }
 
 // c · Dᵀ L_W D (#E by #E), assembled from the corner lines: line l = 3f+k joins the edge
@@ -401,7 +391,7 @@ void NormalFilterRun::n_step_rhs() {
 void NormalFilterRun::n_step(Rows& N_out, const Rows& fallback) {
   const int sweeps = n_system_->solve_in_order(rhs_, N_out, o_.solver_tolerance);
   if (sweeps >= 0) res_.n_solver_iterations.push_back(sweeps);
-  if (o_.project_each_iteration) normalize_rows(N_out, fallback);
+  if (o_.project_each_iteration) detail::normalize_rows(N_out, fallback);
 }
 
 // The stopping test's ‖N^{k+1} − N^k‖_U.
@@ -531,7 +521,7 @@ NormalFilterResult NormalFilterRun::run(const ProgressCallback& progress) {
     N_prev_.swap(N_);  // N_prev = N^k
     N_.swap(N_next_);  // N = N^{k+1}
   }
-  normalize_rows(N_, N0r_);
+  detail::normalize_rows(N_, N0r_);
   res_.normals = in_input_order(N_);
   res_.v = edges_in_input_order(v_);
   res_.edges = topo_.edges;

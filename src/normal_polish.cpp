@@ -7,6 +7,7 @@
 #include "msmesh/topology.h"
 #include "parallel.h"
 #include "pcg.h"
+#include "unit_rows.h"
 
 namespace msmesh::detail {
 
@@ -34,12 +35,8 @@ Eigen::MatrixXd polish_normals(const PreparedMesh& mesh, const Eigen::MatrixXd& 
   const RowMatrixX3 B = N;
   RowMatrixX3 X = N;
   pcg.solve(B, X, 1e-10, 10000, "normal polish");
-  Eigen::MatrixXd out(nf, 3);
-  parallel_for(nf, [&](Eigen::Index f) {
-    const double n = X.row(f).norm();
-    out.row(f) = n > 0 ? Eigen::RowVector3d(X.row(f) / n) : Eigen::RowVector3d(N.row(f));
-  });
-  return out;
+  normalize_rows(X, B);
+  return X;
 }
 
 }  // namespace msmesh::detail
