@@ -273,7 +273,17 @@ void NormalFilterRun::assemble_n_step() {
   const bool use_cg =
       o_.solver == LinearSolver::CG ||
       (o_.solver == LinearSolver::Auto && (nf_ >= kCgMinFaces || well_conditioned) && face_alpha_.minCoeff() >= 0.5);
-  n_system_.emplace(A, use_cg, "normal filtering (N-step)");
+  // CG keeps the N-step matrix and its work vectors in single precision (pcg.h): fewer bytes
+  // per sweep; the unit normals it solves for are well scaled, and the figures of
+  // docs/quality.md stay the same to their printed digits (docs/performance.md). Rounding the
+  // matrix moves the solution by about κ·6e-8 (~4e-7 for cad's κ ≈ 6.6), so a tolerance
+  // tighter than kSingleMinTolerance (preset paper's 1e-8, exact comparisons) keeps double.
+  constexpr double kSingleMinTolerance = 1e-6;
+  using Method = detail::ConstantSystem::Method;
+  const Method method = !use_cg                                      ? Method::cholesky
+                        : o_.solver_tolerance >= kSingleMinTolerance ? Method::cg_single
+                                                                     : Method::cg;
+  n_system_.emplace(A, method, "normal filtering (N-step)");
 
   // Gᵀ L per face: face f meets edge face_edges(f,k) with sign gt_sign(f,k) (+1 when f is the
   // edge's first face, −1 for the second, 0 when the edge carries no gradient), so the

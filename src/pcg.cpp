@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -100,10 +101,14 @@ std::vector<int> reverse_cuthill_mckee(const Eigen::Map<const RowSparse>& A) {
 
 }  // namespace
 
-BlockPcg::BlockPcg(const Eigen::SparseMatrix<double>& A, bool reorder) { init(A, reorder); }
+template <class Stored>
+BasicBlockPcg<Stored>::BasicBlockPcg(const Eigen::SparseMatrix<double>& A, bool reorder) {
+  init(A, reorder);
+}
 
-BlockPcg::BlockPcg(Eigen::SparseMatrix<double>&& A, bool reorder) {
-  bool sorted = !reorder && A.isCompressed();
+template <class Stored>
+BasicBlockPcg<Stored>::BasicBlockPcg(Eigen::SparseMatrix<double>&& A, bool reorder) {
+  bool sorted = std::is_same_v<Stored, double> && !reorder && A.isCompressed();
   for (Eigen::Index i = 0; sorted && i < A.outerSize(); ++i)
     for (int j = A.outerIndexPtr()[i] + 1; j < A.outerIndexPtr()[i + 1]; ++j)
       if (A.innerIndexPtr()[j] <= A.innerIndexPtr()[j - 1]) {
@@ -115,11 +120,12 @@ BlockPcg::BlockPcg(Eigen::SparseMatrix<double>&& A, bool reorder) {
     return;
   }
   // The rows the copy below would make, in the same order: the same products, bit for bit.
-  A_ = std::move(A);
+  if constexpr (std::is_same_v<Stored, double>) A_ = std::move(A);
   find_diagonal();
 }
 
-void BlockPcg::init(const Eigen::SparseMatrix<double>& A, bool reorder) {
+template <class Stored>
+void BasicBlockPcg<Stored>::init(const Eigen::SparseMatrix<double>& A, bool reorder) {
   // A is symmetric, so its compressed columns are its rows: read them in place rather than
   // converting (a copy of A, the largest array of the vertex update).
   Eigen::SparseMatrix<double> compressed;
@@ -141,7 +147,7 @@ void BlockPcg::init(const Eigen::SparseMatrix<double>& A, bool reorder) {
   A_.resizeNonZeros(A0.nonZeros());
   int* outer = A_.outerIndexPtr();
   int* inner = A_.innerIndexPtr();
-  double* val = A_.valuePtr();
+  Stored* val = A_.valuePtr();
   outer[0] = 0;
   std::vector<std::pair<int, double>> row;
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -152,18 +158,55 @@ void BlockPcg::init(const Eigen::SparseMatrix<double>& A, bool reorder) {
     int k = outer[i];
     for (const auto& [c, v] : row) {
       inner[k] = c;
-      val[k++] = v;
+      val[k++] = static_cast<Stored>(v);
     }
     outer[i + 1] = k;
   }
   find_diagonal();
+  to_fixed_width();
 }
 
-void BlockPcg::find_diagonal() {
+template <class Stored>
+void BasicBlockPcg<Stored>::to_fixed_width() {
   const Eigen::Index n = A_.rows();
   const int* outer = A_.outerIndexPtr();
   const int* inner = A_.innerIndexPtr();
-  const double* val = A_.valuePtr();
+  const Stored* val = A_.valuePtr();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    int off = 0;
+    for (int j = outer[i]; j < outer[i + 1]; ++j) off += inner[j] != i;
+    if (off > kEllWidth) return;
+  }
+  ell_cols_.resize(static_cast<size_t>(kEllWidth * n));
+  ell_vals_.resize(static_cast<size_t>(kEllWidth * n));
+  ell_diag_.resize(static_cast<size_t>(n));
+  for (Eigen::Index i = 0; i < n; ++i) {
+    int k = 0;
+    double d = 0;
+    for (int j = outer[i]; j < outer[i + 1]; ++j) {
+      if (inner[j] == i) {
+        d += double(val[j]);
+        continue;
+      }
+      ell_cols_[static_cast<size_t>(kEllWidth * i + k)] = inner[j];
+      ell_vals_[static_cast<size_t>(kEllWidth * i + k++)] = val[j];
+    }
+    for (; k < kEllWidth; ++k) {
+      ell_cols_[static_cast<size_t>(kEllWidth * i + k)] = static_cast<int>(i);
+      ell_vals_[static_cast<size_t>(kEllWidth * i + k)] = 0;
+    }
+    ell_diag_[static_cast<size_t>(i)] = static_cast<Stored>(d);
+  }
+  A_ = Eigen::SparseMatrix<Stored>();
+  diag_pos_ = {};
+}
+
+template <class Stored>
+void BasicBlockPcg<Stored>::find_diagonal() {
+  const Eigen::Index n = A_.rows();
+  const int* outer = A_.outerIndexPtr();
+  const int* inner = A_.innerIndexPtr();
+  const Stored* val = A_.valuePtr();
   auto old_row = [&](Eigen::Index i) { return perm_.empty() ? static_cast<int>(i) : perm_[static_cast<size_t>(i)]; };
   diag_pos_.assign(static_cast<size_t>(n), -1);
   inv_diag_.resize(n);
@@ -178,45 +221,55 @@ void BlockPcg::find_diagonal() {
       bad_row_ = old_row(i);
       bad_value_ = d;
     }
-    inv_diag_(i) = 1.0 / d;
+    inv_diag_(i) = static_cast<Stored>(1.0 / d);
   }
 }
 
-void BlockPcg::set_diagonal(const Eigen::VectorXd& d) {
-  const Eigen::Index n = A_.rows();
-  double* val = A_.valuePtr();
+template <class Stored>
+void BasicBlockPcg<Stored>::set_diagonal(const Eigen::VectorXd& d) {
+  const Eigen::Index n = size();
+  Stored* val = A_.valuePtr();
   bad_row_ = -1;
   for (Eigen::Index i = 0; i < n; ++i) {
     const Eigen::Index o = perm_.empty() ? i : perm_[static_cast<size_t>(i)];
     const double di = d(o);
-    const int j = diag_pos_[static_cast<size_t>(i)];
-    if (j < 0) throw SolverError("conjugate gradients: the matrix does not store diagonal entry " + std::to_string(o));
-    val[j] = di;
+    if (!ell_diag_.empty()) {
+      ell_diag_[static_cast<size_t>(i)] = static_cast<Stored>(di);
+    } else {
+      const int j = diag_pos_[static_cast<size_t>(i)];
+      if (j < 0)
+        throw SolverError("conjugate gradients: the matrix does not store diagonal entry " + std::to_string(o));
+      val[j] = static_cast<Stored>(di);
+    }
     if (bad_row_ < 0 && (!(di > 0) || !std::isfinite(di))) {
       bad_row_ = o;
       bad_value_ = di;
     }
-    inv_diag_(i) = 1.0 / di;
+    inv_diag_(i) = static_cast<Stored>(1.0 / di);
   }
 }
 
-PcgStats BlockPcg::solve(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance, int max_iterations,
-                         const std::string& what) const {
+template <class Stored>
+PcgStats BasicBlockPcg<Stored>::solve(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance,
+                                      int max_iterations, const std::string& what) const {
   return solve_reordered<3>(B, X, relative_tolerance, max_iterations, what);
 }
 
-PcgStats BlockPcg::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance, int max_iterations,
-                         const std::string& what) const {
+template <class Stored>
+PcgStats BasicBlockPcg<Stored>::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance,
+                                      int max_iterations, const std::string& what) const {
   return solve_reordered<1>(b, x, relative_tolerance, max_iterations, what);
 }
 
-PcgStats BlockPcg::solve_in_order(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance, int max_iterations,
-                                  const std::string& what) const {
+template <class Stored>
+PcgStats BasicBlockPcg<Stored>::solve_in_order(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance,
+                                               int max_iterations, const std::string& what) const {
   check_diagonal();
   return solve_permuted<3>(B.data(), X.data(), relative_tolerance, max_iterations, what);
 }
 
-void BlockPcg::check_diagonal() const {
+template <class Stored>
+void BasicBlockPcg<Stored>::check_diagonal() const {
   if (bad_row_ >= 0) {
     std::ostringstream os;
     os << "conjugate gradients: diagonal entry " << bad_row_ << " = " << bad_value_ << " is not positive";
@@ -224,12 +277,13 @@ void BlockPcg::check_diagonal() const {
   }
 }
 
+template <class Stored>
 template <int K, class M>
-PcgStats BlockPcg::solve_reordered(const M& B, M& X, double relative_tolerance, int max_iterations,
-                                   const std::string& what) const {
+PcgStats BasicBlockPcg<Stored>::solve_reordered(const M& B, M& X, double relative_tolerance, int max_iterations,
+                                                const std::string& what) const {
   check_diagonal();
   if (perm_.empty()) return solve_permuted<K>(B.data(), X.data(), relative_tolerance, max_iterations, what);
-  const Eigen::Index n = A_.rows();
+  const Eigen::Index n = size();
   Bp_.resize(static_cast<size_t>(K * n));
   Xp_.resize(static_cast<size_t>(K * n));
   parallel_for(n, [&](Eigen::Index i) {
@@ -247,37 +301,70 @@ PcgStats BlockPcg::solve_reordered(const M& B, M& X, double relative_tolerance, 
   return st;
 }
 
-// CG on the reordered system, B and X n by K row-major (element (i, c) at K·i + c).
+template <class Stored>
 template <int K>
-PcgStats BlockPcg::solve_permuted(const double* B, double* X, double relative_tolerance, int max_iterations,
-                                  const std::string& what) const {
+PcgStats BasicBlockPcg<Stored>::solve_permuted(const double* B, double* X, double relative_tolerance,
+                                               int max_iterations, const std::string& what) const {
+  return ell_cols_.empty() ? solve_layout<K, false>(B, X, relative_tolerance, max_iterations, what)
+                           : solve_layout<K, true>(B, X, relative_tolerance, max_iterations, what);
+}
+
+// CG on the reordered system, B and X n by K row-major (element (i, c) at K·i + c); Ell: the
+// matrix in the fixed-width layout.
+template <class Stored>
+template <int K, bool Ell>
+PcgStats BasicBlockPcg<Stored>::solve_layout(const double* B, double* X, double relative_tolerance, int max_iterations,
+                                             const std::string& what) const {
   using Sums = std::array<double, K>;
-  const Eigen::Index n = A_.rows();
+  const Eigen::Index n = size();
   const int* outer = A_.outerIndexPtr();
   const int* inner = A_.innerIndexPtr();
-  const double* val = A_.valuePtr();
-  const double* inv_d = inv_diag_.data();
+  const Stored* val = A_.valuePtr();
+  const int* ell_col = ell_cols_.data();
+  const Stored* ell_val = ell_vals_.data();
+  const Stored* diag = ell_diag_.data();
+  const Stored* inv_d = inv_diag_.data();
+  // a = (A v)_i: in the fixed-width layout the diagonal, then kEllWidth entries (a row's
+  // unused slots hold 0 at its own column); otherwise the compressed row.
+  auto row_product = [&](Eigen::Index i, const auto* __restrict v, double* a) {
+    if constexpr (Ell) {
+      for (int c = 0; c < K; ++c) a[c] = double(diag[i]) * double(v[K * i + c]);
+      for (int k = 0; k < kEllWidth; ++k) {
+        const double w = ell_val[kEllWidth * i + k];
+        const auto* vj = v + K * static_cast<Eigen::Index>(ell_col[kEllWidth * i + k]);
+        for (int c = 0; c < K; ++c) a[c] += w * double(vj[c]);
+      }
+    } else {
+      for (int c = 0; c < K; ++c) a[c] = 0;
+      const int j1 = outer[i + 1];
+      for (int j = outer[i]; j < j1; ++j) {
+        const double w = val[j];
+        const auto* vj = v + K * static_cast<Eigen::Index>(inner[j]);
+        for (int c = 0; c < K; ++c) a[c] += w * double(vj[c]);
+      }
+    }
+  };
   // Work space kept between calls (no allocation, no page faults in the iterations).
   R_.resize(static_cast<size_t>(K * n));
   P_.resize(static_cast<size_t>(K * n));
   Q_.resize(static_cast<size_t>(K * n));
-  double* Rp = R_.data();
-  double* Pw = P_.data();
-  double* Qp = Q_.data();
+  Stored* Rp = R_.data();
+  Stored* Pw = P_.data();
+  Stored* Qp = Q_.data();
 
-  // r = b − A x, p = D⁻¹ r; sums: ‖b‖², r·D⁻¹r, ‖r‖².
+  // r = b − A x, p = D⁻¹ r; sums: ‖b‖², r·D⁻¹r, ‖r‖² (of the stored r and p).
   const auto s0 = column_sums<K, 3>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 3>& s) {
     for (Eigen::Index i = i0; i < i1; ++i) {
-      double ax[K] = {};
-      for (int j = outer[i]; j < outer[i + 1]; ++j)
-        for (int c = 0; c < K; ++c) ax[c] += val[j] * X[K * static_cast<Eigen::Index>(inner[j]) + c];
+      double ax[K];
+      row_product(i, X, ax);
       for (int c = 0; c < K; ++c) {
-        const double b = B[K * i + c], r = b - ax[c], z = r * inv_d[i];
+        const double b = B[K * i + c];
+        const Stored r = static_cast<Stored>(b - ax[c]), z = static_cast<Stored>(double(r) * double(inv_d[i]));
         Rp[K * i + c] = r;
         Pw[K * i + c] = z;
         s[0][c] += b * b;
-        s[1][c] += r * z;
-        s[2][c] += r * r;
+        s[1][c] += double(r) * double(z);
+        s[2][c] += double(r) * double(r);
       }
     }
   });
@@ -309,19 +396,17 @@ PcgStats BlockPcg::solve_permuted(const double* B, double* X, double relative_to
     }
     // q = A p, p·q.
     const auto s1 = column_sums<K, 1>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 1>& s) {
-      const double* __restrict p = Pw;
-      double* __restrict q = Qp;
+      const Stored* __restrict p = Pw;
+      Stored* __restrict q = Qp;
       Sums pq{};
       for (Eigen::Index i = i0; i < i1; ++i) {
-        double a[K] = {};
-        const int j1 = outer[i + 1];
-        for (int j = outer[i]; j < j1; ++j) {
-          const double av = val[j];
-          const double* pj = p + K * static_cast<Eigen::Index>(inner[j]);
-          for (int c = 0; c < K; ++c) a[c] += av * pj[c];
+        double a[K];
+        row_product(i, p, a);
+        for (int c = 0; c < K; ++c) {
+          const Stored qc = static_cast<Stored>(a[c]);
+          q[K * i + c] = qc;
+          pq[c] += double(p[K * i + c]) * double(qc);
         }
-        for (int c = 0; c < K; ++c) q[K * i + c] = a[c];
-        for (int c = 0; c < K; ++c) pq[c] += p[K * i + c] * a[c];
       }
       s[0] = pq;
     });
@@ -330,16 +415,17 @@ PcgStats BlockPcg::solve_permuted(const double* B, double* X, double relative_to
     // r −= α q; sums: r·D⁻¹r, ‖r‖². (x += α p waits for the pass that overwrites p, which
     // reads p anyway: one pass over p fewer per sweep, the same arithmetic.)
     const auto s2 = column_sums<K, 2>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 2>& s) {
-      double* __restrict r = Rp;
-      const double* __restrict q = Qp;
-      const double* __restrict id = inv_d;
+      Stored* __restrict r = Rp;
+      const Stored* __restrict q = Qp;
+      const Stored* __restrict id = inv_d;
       Sums rzs{}, rrs{};
       for (Eigen::Index i = i0; i < i1; ++i) {
         const Eigen::Index b = K * i;
         const double di = id[i];
         for (int c = 0; c < K; ++c) {
-          const double rc = r[b + c] - alpha[c] * q[b + c];
-          r[b + c] = rc;
+          const Stored stored = static_cast<Stored>(double(r[b + c]) - alpha[c] * double(q[b + c]));
+          const double rc = stored;
+          r[b + c] = stored;
           rzs[c] += rc * rc * di;
           rrs[c] += rc * rc;
         }
@@ -365,9 +451,9 @@ PcgStats BlockPcg::solve_permuted(const double* B, double* X, double relative_to
     if (all_done()) {
       parallel_for_blocks(n, [&](Eigen::Index i0, Eigen::Index i1) {
         double* __restrict x = X;
-        const double* __restrict p = Pw;
+        const Stored* __restrict p = Pw;
         for (Eigen::Index i = i0; i < i1; ++i)
-          for (int c = 0; c < K; ++c) x[K * i + c] += alpha[c] * p[K * i + c];
+          for (int c = 0; c < K; ++c) x[K * i + c] += alpha[c] * double(p[K * i + c]);
       });
       break;
     }
@@ -376,14 +462,14 @@ PcgStats BlockPcg::solve_permuted(const double* B, double* X, double relative_to
     for (int c = 0; c < K; ++c) keep[c] = done[c] ? 0.0 : 1.0;
     parallel_for_blocks(n, [&](Eigen::Index i0, Eigen::Index i1) {
       double* __restrict x = X;
-      double* __restrict p = Pw;
-      const double* __restrict r = Rp;
+      Stored* __restrict p = Pw;
+      const Stored* __restrict r = Rp;
       for (Eigen::Index i = i0; i < i1; ++i) {
         const double di = inv_d[i];
         for (int c = 0; c < K; ++c) {
           const double pc = p[K * i + c];
           x[K * i + c] += alpha[c] * pc;
-          p[K * i + c] = keep[c] * (r[K * i + c] * di + beta[c] * pc);
+          p[K * i + c] = static_cast<Stored>(keep[c] * (double(r[K * i + c]) * di + beta[c] * pc));
         }
       }
     });
@@ -391,5 +477,8 @@ PcgStats BlockPcg::solve_permuted(const double* B, double* X, double relative_to
   stats.iterations = it;
   return stats;
 }
+
+template class BasicBlockPcg<double>;
+template class BasicBlockPcg<float>;
 
 }  // namespace msmesh::detail

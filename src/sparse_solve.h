@@ -41,37 +41,47 @@ class FixedCholesky {
 };
 
 /// A system A X = B that stays the same over the iterations (N-step, vertex update), solved
-/// by factoring once or by warm-started conjugate gradients (pcg.h); callers pick which.
+/// by factoring once or by warm-started conjugate gradients (pcg.h); callers pick which, and
+/// for CG whether the matrix and work vectors are stored in single precision.
 class ConstantSystem {
  public:
-  ConstantSystem(const SparseMatrix& A, bool conjugate_gradients, std::string what) : what_(std::move(what)) {
-    if (conjugate_gradients)
+  enum class Method { cholesky, cg, cg_single };
+  ConstantSystem(const SparseMatrix& A, Method method, std::string what) : what_(std::move(what)) {
+    if (method == Method::cg)
       pcg_ = std::make_unique<BlockPcg>(A);
+    else if (method == Method::cg_single)
+      pcg_single_ = std::make_unique<SingleBlockPcg>(A);
     else
       chol_ = std::make_unique<FixedCholesky>(A, what_);
   }
   /// Solves A X = B; X holds the warm start for CG. Returns the CG sweeps, or −1 when the
   /// system was factored. Throws SolverError naming the system.
   int solve(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance) const {
-    if (pcg_) return pcg_->solve(B, X, relative_tolerance, 100000, what_).iterations;
+    if (pcg_) return pcg_->solve(B, X, relative_tolerance, kMaxSweeps, what_).iterations;
+    if (pcg_single_) return pcg_single_->solve(B, X, relative_tolerance, kMaxSweeps, what_).iterations;
     chol_->solve(B, X, what_);
     return -1;
   }
-  bool iterative() const { return pcg_ != nullptr; }
+  bool iterative() const { return chol_ == nullptr; }
   /// The row order solve_in_order works in (position i holds original row order()[i]);
   /// empty when it is the original order.
-  const std::vector<int>& order() const { return pcg_ ? pcg_->order() : no_order_; }
+  const std::vector<int>& order() const {
+    return pcg_ ? pcg_->order() : (pcg_single_ ? pcg_single_->order() : no_order_);
+  }
   /// As solve, with B and X in order() (no permutation in and out per solve).
   int solve_in_order(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance) const {
-    if (pcg_) return pcg_->solve_in_order(B, X, relative_tolerance, 100000, what_).iterations;
+    if (pcg_) return pcg_->solve_in_order(B, X, relative_tolerance, kMaxSweeps, what_).iterations;
+    if (pcg_single_) return pcg_single_->solve_in_order(B, X, relative_tolerance, kMaxSweeps, what_).iterations;
     chol_->solve(B, X, what_);
     return -1;
   }
 
  private:
+  static constexpr int kMaxSweeps = 100000;
   std::string what_;
   std::unique_ptr<FixedCholesky> chol_;
   std::unique_ptr<BlockPcg> pcg_;
+  std::unique_ptr<SingleBlockPcg> pcg_single_;
   std::vector<int> no_order_;
 };
 

@@ -237,7 +237,8 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
   // allocated (CG keeps its own reordered copy): ~80 + ~150 MB less at a million faces.
   std::optional<SparseMatrix> A_v(v_step_matrix(F, vc, eq, d3, o));
   eq = EdgeQuads();
-  const detail::ConstantSystem v_step(*A_v, use_cg, "vertex update");
+  const detail::ConstantSystem v_step(
+      *A_v, use_cg ? detail::ConstantSystem::Method::cg : detail::ConstantSystem::Method::cholesky, "vertex update");
   A_v.reset();
   const Rows rhs0 = detail::to_rows(d3.asDiagonal() * V0);
 

@@ -1,8 +1,12 @@
-// The library's conjugate gradients (src/pcg.h) on one column, as the v-step uses them.
+// The library's conjugate gradients (src/pcg.h): one column as the v-step uses them, three as
+// the N-step and the vertex update; both matrix layouts and both storage precisions.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <cmath>
+#include <vector>
 
 #include "msmesh/errors.h"
 #include "pcg.h"
@@ -33,4 +37,80 @@ TEST(InternalPcg, OneColumnSolvesWithAChangedDiagonal) {
     EXPECT_GT(st.iterations, 0);
     EXPECT_EQ(pcg.solve(b, x, 1e-10, 1000, "test").iterations, 0);  // warm start: done
   }
+}
+
+namespace {
+
+// A w×w grid graph's weighted Laplacian plus `shift` on the diagonal. max_neighbours 4: every
+// grid link (up to 4 entries beside the diagonal, the compressed layout); 3: the vertical
+// links of every other column only (at most 3, as in a face graph: the fixed-width layout).
+Eigen::SparseMatrix<double> grid_matrix(int w, int max_neighbours, double shift) {
+  const int n = w * w;
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < n; ++i) t.emplace_back(i, i, shift);
+  auto link = [&](int a, int b, double weight) {
+    t.emplace_back(a, b, -weight);
+    t.emplace_back(b, a, -weight);
+    t.emplace_back(a, a, weight);
+    t.emplace_back(b, b, weight);
+  };
+  for (int y = 0; y < w; ++y)
+    for (int x = 0; x < w; ++x) {
+      const int i = y * w + x;
+      if (x + 1 < w) link(i, i + 1, 1.0 + 0.1 * (i % 7));
+      // Vertical links only from even x: every row then has at most 3 neighbours (a face
+      // graph's count), unless max_neighbours asks for all four.
+      if (y + 1 < w && (max_neighbours > 3 || (x + y) % 2 == 0)) link(i, i + w, 0.5 + 0.1 * (i % 5));
+    }
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  A.makeCompressed();
+  return A;
+}
+
+}  // namespace
+
+TEST(InternalPcg, BothLayoutsAndPrecisionsSolveToTheTolerance) {
+  // At most 3 neighbours per row: the fixed-width layout; 4: the compressed rows. Each in
+  // double and in single-precision storage, three columns, against a direct solution.
+  for (int neighbours : {3, 4}) {
+    const Eigen::SparseMatrix<double> A = grid_matrix(40, neighbours, 0.3);
+    const Eigen::Index n = A.rows();
+    Eigen::MatrixXd B(n, 3);
+    for (Eigen::Index i = 0; i < n; ++i) B.row(i) << std::sin(0.1 * i), std::cos(0.07 * i), 1.0;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
+    const Eigen::MatrixXd exact = ldlt.solve(B);
+    const detail::RowMatrixX3 Br = detail::to_rows(B);
+    for (bool single : {false, true}) {
+      detail::RowMatrixX3 X = detail::RowMatrixX3::Zero(n, 3);
+      const detail::PcgStats st = single ? detail::SingleBlockPcg(A).solve(Br, X, 1e-6, 1000, "test")
+                                         : detail::BlockPcg(A).solve(Br, X, 1e-6, 1000, "test");
+      EXPECT_GT(st.iterations, 5) << neighbours << single;
+      EXPECT_LE(st.relative_residual, 1e-6);
+      for (int c = 0; c < 3; ++c) {
+        // The true residual, not only CG's updated one: single precision rounds the matrix
+        // (relative 6e-8) and the work vectors, far below the tolerance.
+        const double res = (A * X.col(c) - B.col(c)).norm() / B.col(c).norm();
+        EXPECT_LT(res, 2e-6) << neighbours << " " << single << " " << c;
+        EXPECT_LT((X.col(c) - exact.col(c)).cwiseAbs().maxCoeff(), 1e-4 * exact.col(c).cwiseAbs().maxCoeff());
+      }
+    }
+  }
+}
+
+TEST(InternalPcg, OneColumnWithAChangedDiagonalInTheCompressedLayout) {
+  // Four neighbours per row (the v-step's edge graph has up to four): compressed rows, whose
+  // diagonal entries set_diagonal rewrites in place.
+  const Eigen::SparseMatrix<double> A = grid_matrix(20, 4, 0.0);
+  const Eigen::Index n = A.rows();
+  detail::BlockPcg pcg(A, /*reorder=*/true);
+  Eigen::VectorXd d(n);
+  for (Eigen::Index i = 0; i < n; ++i) d(i) = A.coeff(i, i) + 1.0 + 0.01 * (i % 3);
+  pcg.set_diagonal(d);
+  Eigen::SparseMatrix<double> Ad = A;
+  for (Eigen::Index i = 0; i < n; ++i) Ad.coeffRef(i, i) = d(i);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 2.0);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+  pcg.solve(b, x, 1e-10, 1000, "test");
+  EXPECT_LT((Ad * x - b).norm(), 1e-9 * b.norm());
 }
