@@ -280,9 +280,9 @@ void NormalFilterRun::assemble_n_step() {
   // tighter than kSingleMinTolerance (preset paper's 1e-8, exact comparisons) keeps double.
   constexpr double kSingleMinTolerance = 1e-6;
   using Method = detail::ConstantSystem::Method;
-  const Method method = !use_cg                                      ? Method::cholesky
-                        : o_.solver_tolerance >= kSingleMinTolerance ? Method::cg_single
-                                                                     : Method::cg;
+  const Method method = !use_cg                                      ? Method::Cholesky
+                        : o_.solver_tolerance >= kSingleMinTolerance ? Method::CgSingle
+                                                                     : Method::Cg;
   n_system_.emplace(A, method, "normal filtering (N-step)");
 
   // Gᵀ L per face: face f meets edge face_edges(f,k) with sign gt_sign(f,k) (+1 when f is the

@@ -45,11 +45,11 @@ class FixedCholesky {
 /// for CG whether the matrix and work vectors are stored in single precision.
 class ConstantSystem {
  public:
-  enum class Method { cholesky, cg, cg_single };
+  enum class Method { Cholesky, Cg, CgSingle };
   ConstantSystem(const SparseMatrix& A, Method method, std::string what) : what_(std::move(what)) {
-    if (method == Method::cg)
+    if (method == Method::Cg)
       pcg_ = std::make_unique<BlockPcg>(A);
-    else if (method == Method::cg_single)
+    else if (method == Method::CgSingle)
       pcg_single_ = std::make_unique<SingleBlockPcg>(A);
     else
       chol_ = std::make_unique<FixedCholesky>(A, what_);

@@ -238,7 +238,7 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
   std::optional<SparseMatrix> A_v(v_step_matrix(F, vc, eq, d3, o));
   eq = EdgeQuads();
   const detail::ConstantSystem v_step(
-      *A_v, use_cg ? detail::ConstantSystem::Method::cg : detail::ConstantSystem::Method::cholesky, "vertex update");
+      *A_v, use_cg ? detail::ConstantSystem::Method::Cg : detail::ConstantSystem::Method::Cholesky, "vertex update");
   A_v.reset();
   const Rows rhs0 = detail::to_rows(d3.asDiagonal() * V0);
 
