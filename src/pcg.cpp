@@ -172,6 +172,7 @@ void BasicBlockPcg<Stored>::to_fixed_width() {
   const int* outer = A_.outerIndexPtr();
   const int* inner = A_.innerIndexPtr();
   const Stored* val = A_.valuePtr();
+  if (n == 0) return;  // nothing to gain; the dispatch tells the layouts apart by ell_cols_
   for (Eigen::Index i = 0; i < n; ++i) {
     int off = 0;
     for (int j = outer[i]; j < outer[i + 1]; ++j) off += inner[j] != i;
