@@ -74,7 +74,8 @@ TEST(ParamsCli, ParamsPrintsAPresetAndAutoForAMesh) {
   EXPECT_NE(table.out.find("--alpha"), std::string::npos) << table.out;
   EXPECT_NE(table.out.find("2.5"), std::string::npos) << table.out;
 
-  const auto dir = test::temp_folder("params_cli");
+  const test::TempDir tmp;  // removed with its content at the end
+  const std::filesystem::path& dir = tmp.path();
   const std::string mesh = (dir / "part.obj").string();
   ASSERT_EQ(test::run_cli("shape fandisk --resolution 8 -q -o " + mesh).status, 0);
   const auto automatic = test::run_cli("params " + mesh);
@@ -92,7 +93,8 @@ TEST(ParamsCli, ParamsPrintsAPresetAndAutoForAMesh) {
 }
 
 TEST(ParamsCli, UsageErrorsExitTwoAndNameTheClosestOption) {
-  const auto dir = test::temp_folder("usage_cli");
+  const test::TempDir tmp;  // removed with its content at the end
+  const std::filesystem::path& dir = tmp.path();
   const std::string in = (dir / "m.obj").string(), out = (dir / "o.obj").string();
   ASSERT_EQ(test::run_cli("shape cube --resolution 2 -q -o " + in).status, 0);
   struct Case {
@@ -125,7 +127,8 @@ TEST(ParamsCli, UsageErrorsExitTwoAndNameTheClosestOption) {
 }
 
 TEST(ParamsCli, QuietMeansTheSameOnEverySubcommand) {
-  const auto dir = test::temp_folder("quiet_cli");
+  const test::TempDir tmp;  // removed with its content at the end
+  const std::filesystem::path& dir = tmp.path();
   const std::string clean = (dir / "c.obj").string(), noisy = (dir / "n.obj").string();
   for (const std::string& args :
        {"shape fandisk --resolution 4 -q -o " + clean, "noise " + clean + " -o " + noisy + " --sigma 0.2 -q",
@@ -140,7 +143,8 @@ TEST(ParamsCli, QuietMeansTheSameOnEverySubcommand) {
 }
 
 TEST(ParamsCli, DenoiseSaysWhatItEstimatedAndTakesAStrength) {
-  const auto dir = test::temp_folder("strength_cli");
+  const test::TempDir tmp;  // removed with its content at the end
+  const std::filesystem::path& dir = tmp.path();
   const std::string mesh = (dir / "part.obj").string(), out = (dir / "out.obj").string();
   ASSERT_EQ(test::run_cli("shape fandisk -o " + mesh + " --resolution 8 -q").status, 0);
   const auto noisy = test::run_cli("noise " + mesh + " -o " + mesh + ".noisy.obj --sigma 0.3 --seed 2 -q");
