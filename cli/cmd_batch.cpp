@@ -43,7 +43,8 @@ void unset_runtime_settings() {
   const char* wait = std::getenv("OMP_WAIT_POLICY");
   if (wait && std::strcmp(wait, "passive") == 0) unsetenv("OMP_WAIT_POLICY");
   const char* tunables = std::getenv("GLIBC_TUNABLES");
-  if (tunables && std::strstr(tunables, "glibc.malloc.hugetlb=1") == tunables) unsetenv("GLIBC_TUNABLES");
+  if (tunables && std::strstr(tunables, "glibc.malloc.mmap_threshold=33554432:") == tunables)
+    unsetenv("GLIBC_TUNABLES");
 }
 
 [[noreturn]] void run(const std::vector<std::string>& args) {

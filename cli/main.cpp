@@ -24,14 +24,15 @@ namespace {
 // with them when the user has not chosen otherwise (docs/performance.md has the figures):
 //  - OMP_WAIT_POLICY=passive: OpenMP threads waiting at a barrier spin by default; on a busy
 //    machine a spinning thread holds a core the working thread needs (a 1 s job took 10 s).
-//  - GLIBC_TUNABLES: large arrays on transparent huge pages (hugetlb=1), and freed memory kept
-//    for reuse rather than handed back to the system after every iteration (top_pad,
-//    trim_threshold, mmap_threshold at its 32 MB maximum). On this kind of virtual machine a
-//    page fault costs microseconds: setting up the operators of a million-face mesh took 2-3
-//    times longer with 4 KB pages, and the whole 1M-face denoise 12.6 s instead of 10.1 s.
+//  - GLIBC_TUNABLES: freed memory kept for reuse rather than handed back to the system after
+//    every iteration (top_pad, trim_threshold, mmap_threshold at its 32 MB maximum): on a
+//    virtual machine every fresh page costs a fault and its zeroing. Not transparent huge
+//    pages (hugetlb=1, used until 2026-12-03): a madvised huge page needs a free 2 MB block,
+//    which the host has often taken back (or the kernel compacts memory for it first), so the
+//    first touch cost 3 s per GB instead of 0.4 s with 4 KB pages; the 1.3M-face denoise
+//    spent 3.4 s in the kernel instead of 0.65 s (docs/performance.md, "Issue 20, sixth round").
 constexpr const char* kMallocTunables =
-    "glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=33554432:glibc.malloc.top_pad=67108864:"
-    "glibc.malloc.trim_threshold=1073741824";
+    "glibc.malloc.mmap_threshold=33554432:glibc.malloc.top_pad=67108864:glibc.malloc.trim_threshold=1073741824";
 
 void restart_with_runtime_settings(char** argv) {
   if (std::getenv("MSMESH_NO_RESTART") != nullptr) return;

@@ -39,7 +39,7 @@ def main():
     args = ap.parse_args()
     env = dict(os.environ)
     env.setdefault("OMP_WAIT_POLICY", "passive")  # what the msmesh program sets for itself
-    env.setdefault("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1:glibc.malloc.mmap_threshold=33554432:"
+    env.setdefault("GLIBC_TUNABLES", "glibc.malloc.mmap_threshold=33554432:"
                    "glibc.malloc.top_pad=67108864:glibc.malloc.trim_threshold=1073741824")
     # The machine's memory speed at the time (bench/probe.cpp): the same code measured 2.6x
     # slower on a day this virtual machine's memory was slower (docs/performance.md).
