@@ -47,12 +47,14 @@ class ConstantSystem {
  public:
   enum class Method { Cholesky, Cg, CgSingle };
   ConstantSystem(const SparseMatrix& A, Method method, std::string what) : what_(std::move(what)) {
-    if (method == Method::Cg)
+    if (method == Method::Cg) {
       pcg_ = std::make_unique<BlockPcg>(A);
-    else if (method == Method::CgSingle)
+    } else if (method == Method::CgSingle) {
       pcg_single_ = std::make_unique<SingleBlockPcg>(A);
-    else
+      pcg_single_->use_chebyshev();
+    } else {
       chol_ = std::make_unique<FixedCholesky>(A, what_);
+    }
   }
   /// Solves A X = B; X holds the warm start for CG. Returns the CG sweeps, or −1 when the
   /// system was factored. Throws SolverError naming the system.

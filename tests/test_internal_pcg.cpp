@@ -114,3 +114,82 @@ TEST(InternalPcg, OneColumnWithAChangedDiagonalInTheCompressedLayout) {
   pcg.solve(b, x, 1e-10, 1000, "test");
   EXPECT_LT((Ad * x - b).norm(), 1e-9 * b.norm());
 }
+
+TEST(InternalPcg, ChebyshevAfterTheFirstSolveReachesTheTolerance) {
+  // use_chebyshev: the first solve is CG (it learns the spectrum), the later ones Chebyshev
+  // iteration; a sequence of warm-started solves as in the N-step, in both layouts and both
+  // precisions, each against a direct solution, with a right-hand side column that is 0.
+  for (int neighbours : {3, 4}) {
+    const Eigen::SparseMatrix<double> A = grid_matrix(40, neighbours, 0.3);
+    const Eigen::Index n = A.rows();
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
+    for (bool single : {false, true}) {
+      detail::BlockPcg cg_double(A), cheb_double(A);
+      detail::SingleBlockPcg cg_single(A), cheb_single(A);
+      (single ? static_cast<void>(cheb_single.use_chebyshev()) : cheb_double.use_chebyshev());
+      detail::RowMatrixX3 X = detail::RowMatrixX3::Zero(n, 3), Xcg = X;
+      int sweeps = 0, cg_sweeps = 0;
+      for (int k = 0; k < 6; ++k) {
+        Eigen::MatrixXd B(n, 3);
+        for (Eigen::Index i = 0; i < n; ++i)
+          B.row(i) << std::sin(0.1 * i + 0.3 * k), k % 2 == 0 ? 0.0 : std::cos(0.07 * i), 1.0 + 0.1 * k;
+        const detail::RowMatrixX3 Br = detail::to_rows(B);
+        const Eigen::MatrixXd exact = ldlt.solve(B);
+        const detail::PcgStats st =
+            single ? cheb_single.solve(Br, X, 1e-6, 1000, "test") : cheb_double.solve(Br, X, 1e-6, 1000, "test");
+        const detail::PcgStats cg =
+            single ? cg_single.solve(Br, Xcg, 1e-6, 1000, "test") : cg_double.solve(Br, Xcg, 1e-6, 1000, "test");
+        EXPECT_LE(st.relative_residual, 1e-6);
+        if (k > 0) {
+          sweeps += st.iterations;
+          cg_sweeps += cg.iterations;
+        }
+        for (int c = 0; c < 3; ++c) {
+          if (B.col(c).norm() == 0) {
+            EXPECT_EQ(X.col(c).norm(), 0.0);
+            continue;
+          }
+          const double res = (A * X.col(c) - B.col(c)).norm() / B.col(c).norm();
+          EXPECT_LT(res, 2e-6) << neighbours << " " << single << " " << k << " " << c;
+          EXPECT_LT((X.col(c) - exact.col(c)).cwiseAbs().maxCoeff(), 1e-4 * exact.col(c).cwiseAbs().maxCoeff());
+        }
+      }
+      // Chebyshev needs a few more sweeps than CG, not many more.
+      EXPECT_GT(sweeps, 0);
+      EXPECT_LE(sweeps, 1.6 * cg_sweeps) << neighbours << " " << single;
+    }
+  }
+}
+
+TEST(InternalPcg, ChebyshevWithASpectrumLearntFromOnePartStillConverges) {
+  // Two uncoupled blocks: a well-conditioned one (a large shift) and a badly conditioned one
+  // (a small shift). The first solve's right-hand side lives on the first block only, so the
+  // spectrum learnt from it misses the second block's small eigenvalues; the later solves on
+  // the second block converge slower than Chebyshev's rate promises, CG takes over, and the
+  // tolerance is met all the same.
+  const Eigen::SparseMatrix<double> A1 = grid_matrix(30, 3, 5.0), A2 = grid_matrix(30, 3, 0.01);
+  const Eigen::Index m = A1.rows(), n = 2 * m;
+  std::vector<Eigen::Triplet<double>> t;
+  for (int part = 0; part < 2; ++part) {
+    const Eigen::SparseMatrix<double>& Ap = part == 0 ? A1 : A2;
+    for (int k = 0; k < Ap.outerSize(); ++k)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(Ap, k); it; ++it)
+        t.emplace_back(part * m + it.row(), part * m + it.col(), it.value());
+  }
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  // Double storage: the second block's κ (~10³) would make single precision's rounding of
+  // the matrix itself visible in the true residual.
+  detail::BlockPcg pcg(A);
+  pcg.use_chebyshev();
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n), x = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index i = 0; i < m; ++i) b(i) = std::sin(0.05 * i);
+  EXPECT_GE(pcg.solve(b, x, 1e-6, 1000, "test").iterations, 8);  // CG: learns block 1's spectrum
+  EXPECT_LT((A * x - b).norm(), 2e-6 * b.norm());
+  for (int k = 0; k < 3; ++k) {
+    for (Eigen::Index i = 0; i < n; ++i) b(i) = i < m ? 0.0 : 1.0 + k + std::sin(0.01 * i);
+    const detail::PcgStats st = pcg.solve(b, x, 1e-6, 1000, "test");
+    EXPECT_LE(st.relative_residual, 1e-6);
+    EXPECT_LT((A * x - b).norm(), 2e-6 * b.norm()) << k;
+  }
+}
