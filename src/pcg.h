@@ -60,12 +60,13 @@ class BasicBlockPcg {
   /// The same for one right-hand side b (n), x holding the warm start.
   PcgStats solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance, int max_iterations,
                  const std::string& what) const;
-  /// From the next solve on, learn the spectrum of D⁻¹A (the upper end from the matrix by
-  /// Gershgorin, the lower from the Lanczos coefficients of the first CG solve of at least
-  /// kLanczosSweeps sweeps) and then solve by Chebyshev iteration: one pass over the rows per
-  /// sweep instead of three, for a few more sweeps; CG takes over a solve that does not
-  /// converge at the promised rate (and learns the spectrum again). For a constant matrix
-  /// solved many times (the N-step); the diagonal must not change afterwards.
+  /// Solve by Chebyshev iteration once the spectrum of D⁻¹A is known: one pass over the rows
+  /// per sweep instead of CG's three, for a few more sweeps. The upper end of the spectrum
+  /// comes from the matrix (Gershgorin), the lower one too when the matrix is strongly
+  /// diagonally dominant (the v-step's; recomputed by set_diagonal), else from the Lanczos
+  /// coefficients of the first CG solve of at least kLanczosSweeps sweeps (the N-step's).
+  /// CG takes over a solve that does not converge at the promised rate (and learns the
+  /// spectrum again).
   void use_chebyshev();
   /// The order CG works in: position i holds original row order()[i]; empty when the rows
   /// keep their order.
@@ -92,6 +93,7 @@ class BasicBlockPcg {
   template <int K, bool Ell, class T>
   void row_product(Eigen::Index i, const T* __restrict v, double* a) const;
   void learn_spectrum(const std::vector<double>& alpha, const std::vector<double>& beta) const;
+  void set_spectrum(double radius);
   void check_diagonal() const;
   void init(const Eigen::SparseMatrix<double>& A, bool reorder);
   void find_diagonal();
@@ -111,6 +113,8 @@ class BasicBlockPcg {
   // Chebyshev iteration (use_chebyshev): the interval of D⁻¹A's spectrum; λ_min_ 0 until
   // learnt from a CG solve of at least kLanczosSweeps sweeps.
   static constexpr int kLanczosSweeps = 8;
+  static constexpr double kGershgorinKappa = 1.1;
+  std::vector<float> off_sums_;  // Σ_{j≠i} |a_ij| per row (use_chebyshev)
   bool chebyshev_ = false;
   double lambda_max_ = 0;
   mutable double lambda_min_ = 0;
