@@ -542,7 +542,10 @@ double smallest_tridiagonal_eigenvalue(const std::vector<double>& a, const std::
   };
   for (int k = 0; k < 100 && hi - lo > 1e-12 * std::max(1.0, std::abs(hi)); ++k) {
     const double mid = 0.5 * (lo + hi);
-    (below(mid) >= 1 ? hi : lo) = mid;
+    if (below(mid) >= 1)
+      hi = mid;
+    else
+      lo = mid;
   }
   return 0.5 * (lo + hi);
 }
@@ -626,7 +629,10 @@ PcgStats BasicBlockPcg<Stored>::solve_chebyshev(const double* B, double* X, doub
   Stored* Rp = R_.data();
   Stored* D0 = P_.data();
   Stored* D1 = Q_.data();
-  const double theta = 0.5 * (lambda_max_ + lambda_min_), delta = 0.5 * (lambda_max_ - lambda_min_);
+  // (A diagonal matrix has a one-point interval: a width of 1e-9 θ keeps the coefficients
+  // finite; the first sweep then solves it.)
+  const double theta = 0.5 * (lambda_max_ + lambda_min_);
+  const double delta = std::max(0.5 * (lambda_max_ - lambda_min_), 1e-9 * theta);
   const double sigma1 = theta / delta;
 
   // r = b − A x, d = D⁻¹ r / θ; sums ‖b‖², ‖r‖².

@@ -126,7 +126,10 @@ TEST(InternalPcg, ChebyshevAfterTheFirstSolveReachesTheTolerance) {
     for (bool single : {false, true}) {
       detail::BlockPcg cg_double(A), cheb_double(A);
       detail::SingleBlockPcg cg_single(A), cheb_single(A);
-      (single ? static_cast<void>(cheb_single.use_chebyshev()) : cheb_double.use_chebyshev());
+      if (single)
+        cheb_single.use_chebyshev();
+      else
+        cheb_double.use_chebyshev();
       detail::RowMatrixX3 X = detail::RowMatrixX3::Zero(n, 3), Xcg = X;
       int sweeps = 0, cg_sweeps = 0;
       for (int k = 0; k < 6; ++k) {
@@ -214,4 +217,14 @@ TEST(InternalPcg, ChebyshevOnGershgorinsIntervalFollowsTheDiagonal) {
     EXPECT_LE(st.iterations, 8) << k;  // κ ≈ 1.03: a few sweeps, as CG
     EXPECT_LT((Ad * x - b).norm(), 2e-10 * b.norm()) << k;
   }
+  // A diagonal matrix: Gershgorin's interval is one point.
+  Eigen::SparseMatrix<double> D(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) D.insert(i, i) = 2.0 + (i % 3);
+  D.makeCompressed();
+  detail::BlockPcg diagonal(D, /*reorder=*/false);
+  diagonal.use_chebyshev();
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 1.0);
+  x.setZero();
+  EXPECT_LE(diagonal.solve(b, x, 1e-10, 1000, "test").iterations, 2);
+  EXPECT_LT((D * x - b).norm(), 2e-10 * b.norm());
 }
