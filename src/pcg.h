@@ -7,6 +7,10 @@
 // and the cost grows linearly with the face count, where a sparse Cholesky factor grows like
 // n^1.5 (docs/performance.md has the measurements).
 //
+// Chebyshev iteration (use_chebyshev) replaces CG where the spectrum is known: the N-step's
+// constant matrix after its first solve, the v-step's diagonally dominant one throughout; one
+// pass over the rows per sweep instead of three (docs/performance.md, "Issue 20, sixth round").
+//
 // Deterministic whatever the thread count: the matrix–vector products are row-parallel and
 // every reduction sums fixed blocks of rows in a fixed order.
 //

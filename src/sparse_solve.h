@@ -42,7 +42,8 @@ class FixedCholesky {
 
 /// A system A X = B that stays the same over the iterations (N-step, vertex update), solved
 /// by factoring once or by warm-started conjugate gradients (pcg.h); callers pick which, and
-/// for CG whether the matrix and work vectors are stored in single precision.
+/// for CG whether the matrix and work vectors are stored in single precision (CgSingle, the
+/// N-step: after its first solve, Chebyshev iteration on the spectrum that solve learnt).
 class ConstantSystem {
  public:
   enum class Method { Cholesky, Cg, CgSingle };
