@@ -372,9 +372,6 @@ PcgStats BasicBlockPcg<Stored>::solve_layout(const double* B, double* X, double 
   using Sums = std::array<double, K>;
   const Eigen::Index n = size();
   const Stored* inv_d = inv_diag_.data();
-  auto row_product = [this](Eigen::Index i, const auto* __restrict v, double* a) {
-    this->template row_product<K, Ell>(i, v, a);
-  };
   // Work space kept between calls (no allocation, no page faults in the iterations).
   R_.resize(static_cast<size_t>(K * n));
   P_.resize(static_cast<size_t>(K * n));
@@ -387,7 +384,7 @@ PcgStats BasicBlockPcg<Stored>::solve_layout(const double* B, double* X, double 
   const auto s0 = column_sums<K, 3>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 3>& s) {
     for (Eigen::Index i = i0; i < i1; ++i) {
       double ax[K];
-      row_product(i, X, ax);
+      row_product<K, Ell>(i, X, ax);
       for (int c = 0; c < K; ++c) {
         const double b = B[K * i + c];
         const Stored r = static_cast<Stored>(b - ax[c]), z = static_cast<Stored>(double(r) * double(inv_d[i]));
@@ -436,7 +433,7 @@ PcgStats BasicBlockPcg<Stored>::solve_layout(const double* B, double* X, double 
       Sums pq{};
       for (Eigen::Index i = i0; i < i1; ++i) {
         double a[K];
-        row_product(i, p, a);
+        row_product<K, Ell>(i, p, a);
         for (int c = 0; c < K; ++c) {
           const Stored qc = static_cast<Stored>(a[c]);
           q[K * i + c] = qc;
@@ -559,6 +556,7 @@ void BasicBlockPcg<Stored>::use_chebyshev() {
   // set_diagonal changes the diagonal).
   const Eigen::Index n = size();
   off_sums_.assign(static_cast<size_t>(n), 0);
+  double radius = 0;  // max_i Σ_{j≠i} |a_ij| / a_ii (set_spectrum)
   for (Eigen::Index i = 0; i < n; ++i) {
     double off = 0;
     if (!ell_cols_.empty()) {
@@ -568,10 +566,8 @@ void BasicBlockPcg<Stored>::use_chebyshev() {
         if (A_.innerIndexPtr()[j] != i) off += std::abs(double(A_.valuePtr()[j]));
     }
     off_sums_[static_cast<size_t>(i)] = static_cast<float>(off);
-  }
-  double radius = 0;
-  for (Eigen::Index i = 0; i < n; ++i)
     radius = std::max(radius, double(off_sums_[static_cast<size_t>(i)]) * double(inv_diag_(i)));
+  }
   set_spectrum(radius);
 }
 

@@ -6,6 +6,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "msmesh/errors.h"
@@ -115,52 +116,55 @@ TEST(InternalPcg, OneColumnWithAChangedDiagonalInTheCompressedLayout) {
   EXPECT_LT((Ad * x - b).norm(), 1e-9 * b.norm());
 }
 
+namespace {
+
+// A sequence of warm-started solves as in the N-step, with Chebyshev (after its first solve,
+// CG, has learnt the spectrum) and with plain CG side by side, each against a direct solution;
+// one right-hand side column is 0 every other solve.
+template <class Pcg>
+void check_chebyshev_sequence(const Eigen::SparseMatrix<double>& A, const std::string& label) {
+  const Eigen::Index n = A.rows();
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
+  Pcg cheb(A), cg(A);
+  cheb.use_chebyshev();
+  detail::RowMatrixX3 X = detail::RowMatrixX3::Zero(n, 3), Xcg = X;
+  int sweeps = 0, cg_sweeps = 0;
+  for (int k = 0; k < 6; ++k) {
+    Eigen::MatrixXd B(n, 3);
+    for (Eigen::Index i = 0; i < n; ++i)
+      B.row(i) << std::sin(0.1 * i + 0.3 * k), k % 2 == 0 ? 0.0 : std::cos(0.07 * i), 1.0 + 0.1 * k;
+    const detail::RowMatrixX3 Br = detail::to_rows(B);
+    const Eigen::MatrixXd exact = ldlt.solve(B);
+    const detail::PcgStats st = cheb.solve(Br, X, 1e-6, 1000, "test");
+    const detail::PcgStats st_cg = cg.solve(Br, Xcg, 1e-6, 1000, "test");
+    EXPECT_LE(st.relative_residual, 1e-6);
+    if (k > 0) {
+      sweeps += st.iterations;
+      cg_sweeps += st_cg.iterations;
+    }
+    for (int c = 0; c < 3; ++c) {
+      if (B.col(c).norm() == 0) {
+        EXPECT_EQ(X.col(c).norm(), 0.0);
+        continue;
+      }
+      const double res = (A * X.col(c) - B.col(c)).norm() / B.col(c).norm();
+      EXPECT_LT(res, 2e-6) << label << " " << k << " " << c;
+      EXPECT_LT((X.col(c) - exact.col(c)).cwiseAbs().maxCoeff(), 1e-4 * exact.col(c).cwiseAbs().maxCoeff());
+    }
+  }
+  // Chebyshev needs a few more sweeps than CG, not many more.
+  EXPECT_GT(sweeps, 0);
+  EXPECT_LE(sweeps, 1.6 * cg_sweeps) << label;
+}
+
+}  // namespace
+
 TEST(InternalPcg, ChebyshevAfterTheFirstSolveReachesTheTolerance) {
-  // use_chebyshev: the first solve is CG (it learns the spectrum), the later ones Chebyshev
-  // iteration; a sequence of warm-started solves as in the N-step, in both layouts and both
-  // precisions, each against a direct solution, with a right-hand side column that is 0.
+  // use_chebyshev in both layouts (3 neighbours: fixed width; 4: compressed) and both precisions.
   for (int neighbours : {3, 4}) {
     const Eigen::SparseMatrix<double> A = grid_matrix(40, neighbours, 0.3);
-    const Eigen::Index n = A.rows();
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
-    for (bool single : {false, true}) {
-      detail::BlockPcg cg_double(A), cheb_double(A);
-      detail::SingleBlockPcg cg_single(A), cheb_single(A);
-      if (single)
-        cheb_single.use_chebyshev();
-      else
-        cheb_double.use_chebyshev();
-      detail::RowMatrixX3 X = detail::RowMatrixX3::Zero(n, 3), Xcg = X;
-      int sweeps = 0, cg_sweeps = 0;
-      for (int k = 0; k < 6; ++k) {
-        Eigen::MatrixXd B(n, 3);
-        for (Eigen::Index i = 0; i < n; ++i)
-          B.row(i) << std::sin(0.1 * i + 0.3 * k), k % 2 == 0 ? 0.0 : std::cos(0.07 * i), 1.0 + 0.1 * k;
-        const detail::RowMatrixX3 Br = detail::to_rows(B);
-        const Eigen::MatrixXd exact = ldlt.solve(B);
-        const detail::PcgStats st =
-            single ? cheb_single.solve(Br, X, 1e-6, 1000, "test") : cheb_double.solve(Br, X, 1e-6, 1000, "test");
-        const detail::PcgStats cg =
-            single ? cg_single.solve(Br, Xcg, 1e-6, 1000, "test") : cg_double.solve(Br, Xcg, 1e-6, 1000, "test");
-        EXPECT_LE(st.relative_residual, 1e-6);
-        if (k > 0) {
-          sweeps += st.iterations;
-          cg_sweeps += cg.iterations;
-        }
-        for (int c = 0; c < 3; ++c) {
-          if (B.col(c).norm() == 0) {
-            EXPECT_EQ(X.col(c).norm(), 0.0);
-            continue;
-          }
-          const double res = (A * X.col(c) - B.col(c)).norm() / B.col(c).norm();
-          EXPECT_LT(res, 2e-6) << neighbours << " " << single << " " << k << " " << c;
-          EXPECT_LT((X.col(c) - exact.col(c)).cwiseAbs().maxCoeff(), 1e-4 * exact.col(c).cwiseAbs().maxCoeff());
-        }
-      }
-      // Chebyshev needs a few more sweeps than CG, not many more.
-      EXPECT_GT(sweeps, 0);
-      EXPECT_LE(sweeps, 1.6 * cg_sweeps) << neighbours << " " << single;
-    }
+    check_chebyshev_sequence<detail::BlockPcg>(A, std::to_string(neighbours) + " double");
+    check_chebyshev_sequence<detail::SingleBlockPcg>(A, std::to_string(neighbours) + " single");
   }
 }
 
