@@ -607,11 +607,17 @@ void BasicBlockPcg<Stored>::learn_spectrum(const std::vector<double>& alpha, con
 }
 
 // Chebyshev iteration on D⁻¹A with the spectrum in [λ_min, λ_max] (Saad, Iterative Methods
-// for Sparse Linear Systems, algorithm 12.1): its coefficients are known in advance, so a sweep
-// is one pass over the rows (the product, the updates of x, r and the direction, and ‖r‖²)
-// instead of CG's three, with one reduction. Stops on the same test as CG; if it has not
-// converged within twice the sweeps its rate promises (a spectrum wider than estimated), CG
-// takes over from where it got to.
+// for Sparse Linear Systems, algorithm 12.1), written as the three-term recurrence of the
+// correction y = x − x₀ (Gutknecht and Röllin, "The Chebyshev iteration revisited", 2002):
+// y₁ = D⁻¹r₀/θ, y_{k+1} = y_k + c₁(y_k − y_{k−1}) + c₂ D⁻¹(r₀ − A y_k). Its coefficients are
+// known in advance, so a sweep is one pass over the rows that reads r₀, y_k and y_{k−1} and
+// writes y_{k+1} over y_{k−1}, with one reduction (‖r_k‖² for the stopping test); x is read
+// and written once, at the end. In single precision the correction and r₀ are stored as
+// floats: each is small against x and b, so their rounding is relative to the residual the
+// solve starts from, not to the solution (about 80 bytes per row and sweep of the N-step
+// instead of the 140 of the recurrence on x, r and the direction). Stops on the same test as
+// CG; if it has not converged within twice the sweeps its rate promises (a spectrum wider than
+// estimated), CG takes over from where it got to.
 template <class Stored>
 template <int K, bool Ell>
 PcgStats BasicBlockPcg<Stored>::solve_chebyshev(const double* B, double* X, double relative_tolerance,
@@ -622,16 +628,16 @@ PcgStats BasicBlockPcg<Stored>::solve_chebyshev(const double* B, double* X, doub
   R_.resize(static_cast<size_t>(K * n));
   P_.resize(static_cast<size_t>(K * n));
   Q_.resize(static_cast<size_t>(K * n));
-  Stored* Rp = R_.data();
-  Stored* D0 = P_.data();
-  Stored* D1 = Q_.data();
+  Stored* R0 = R_.data();
+  Stored* Y0 = P_.data();  // y_k
+  Stored* Y1 = Q_.data();  // y_{k−1}, overwritten by y_{k+1}
   // (A diagonal matrix has a one-point interval: a width of 1e-9 θ keeps the coefficients
   // finite; the first sweep then solves it.)
   const double theta = 0.5 * (lambda_max_ + lambda_min_);
   const double delta = std::max(0.5 * (lambda_max_ - lambda_min_), 1e-9 * theta);
   const double sigma1 = theta / delta;
 
-  // r = b − A x, d = D⁻¹ r / θ; sums ‖b‖², ‖r‖².
+  // r₀ = b − A x₀, y₁ = D⁻¹ r₀ / θ; sums ‖b‖², ‖r₀‖².
   const auto s0 = column_sums<K, 2>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 2>& s) {
     for (Eigen::Index i = i0; i < i1; ++i) {
       double ax[K];
@@ -639,8 +645,8 @@ PcgStats BasicBlockPcg<Stored>::solve_chebyshev(const double* B, double* X, doub
       for (int c = 0; c < K; ++c) {
         const double b = B[K * i + c];
         const Stored r = static_cast<Stored>(b - ax[c]);
-        Rp[K * i + c] = r;
-        D0[K * i + c] = static_cast<Stored>(double(r) * double(inv_d[i]) / theta);
+        R0[K * i + c] = r;
+        Y0[K * i + c] = static_cast<Stored>(double(r) * double(inv_d[i]) / theta);
         s[0][c] += b * b;
         s[1][c] += double(r) * double(r);
       }
@@ -661,14 +667,21 @@ PcgStats BasicBlockPcg<Stored>::solve_chebyshev(const double* B, double* X, doub
   };
   for (int c = 0; c < K; ++c) {
     tol[c] = relative_tolerance * std::sqrt(s0[0][c]);
-    if (s0[0][c] == 0)  // b = 0: the solution is 0 (and r and d stay 0)
+    if (s0[0][c] == 0)  // b = 0: the solution is 0 (and r₀ and y stay 0)
       for (Eigen::Index i = 0; i < n; ++i) {
         X[K * i + c] = 0;
-        Rp[K * i + c] = 0;
-        D0[K * i + c] = 0;
+        R0[K * i + c] = 0;
+        Y0[K * i + c] = 0;
       }
   }
   if (converged(s0[1])) return stats;
+  // x += y (the pass that ends a solve, or hands it to CG).
+  auto add_correction = [&](const Stored* y) {
+    parallel_for_blocks(n, [&](Eigen::Index i0, Eigen::Index i1) {
+      double* __restrict x = X;
+      for (Eigen::Index i = K * i0; i < K * i1; ++i) x[i] += double(y[i]);
+    });
+  };
   // Sweeps the rate promises: the error falls at least like 2 q^k with q = (√κ−1)/(√κ+1).
   const double kappa = lambda_max_ / lambda_min_, q = (std::sqrt(kappa) - 1) / (std::sqrt(kappa) + 1);
   const double reduction = std::max(relative_tolerance / std::max(stats.relative_residual, 1e-300), 1e-300);
@@ -680,6 +693,7 @@ PcgStats BasicBlockPcg<Stored>::solve_chebyshev(const double* B, double* X, doub
     if (++it > budget) {
       // Not the spectrum learnt: CG from here, learning it again (its residual now holds
       // what Chebyshev was slow on) for the solves after this one.
+      add_correction(Y0);
       lambda_min_ = 0;
       const PcgStats cg = solve_layout<K, Ell>(B, X, relative_tolerance, max_iterations - it + 1, what);
       stats.iterations = it - 1 + cg.iterations;
@@ -689,33 +703,33 @@ PcgStats BasicBlockPcg<Stored>::solve_chebyshev(const double* B, double* X, doub
     const double rho_next = 1 / (2 * sigma1 - rho);
     const double c1 = rho_next * rho, c2 = 2 * rho_next / delta;
     rho = rho_next;
-    // x += d, r −= A d, d' = c1 d + c2 D⁻¹ r; sum ‖r‖².
-    const auto s1 = column_sums<K, 1>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 1>& s) {
-      const Stored* __restrict d = D0;
-      Stored* __restrict dn = D1;
-      Stored* __restrict r = Rp;
-      double* __restrict x = X;
-      Sums rr{};
-      for (Eigen::Index i = i0; i < i1; ++i) {
-        double a[K];
-        row_product<K, Ell>(i, d, a);
-        const double di = inv_d[i];
-        for (int c = 0; c < K; ++c) {
-          const Eigen::Index e = K * i + c;
-          const double dc = d[e];
-          x[e] += dc;
-          const Stored stored = static_cast<Stored>(double(r[e]) - a[c]);
-          const double rc = stored;
-          r[e] = stored;
-          dn[e] = static_cast<Stored>(c1 * dc + c2 * di * rc);
-          rr[c] += rc * rc;
+    // r = r₀ − A y_k, y_{k+1} = y_k + c₁ (y_k − y_{k−1}) + c₂ D⁻¹ r (y₀ = 0); sum ‖r‖².
+    auto sweep = [&](auto first) {
+      return column_sums<K, 1>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 1>& s) {
+        const Stored* __restrict y = Y0;
+        Stored* __restrict y_old = Y1;
+        const Stored* __restrict r0 = R0;
+        Sums rr{};
+        for (Eigen::Index i = i0; i < i1; ++i) {
+          double a[K];
+          row_product<K, Ell>(i, y, a);
+          const double di = inv_d[i];
+          for (int c = 0; c < K; ++c) {
+            const Eigen::Index e = K * i + c;
+            const double rc = double(r0[e]) - a[c], yc = y[e];
+            const double previous = decltype(first)::value ? 0.0 : double(y_old[e]);
+            y_old[e] = static_cast<Stored>(yc + c1 * (yc - previous) + c2 * di * rc);
+            rr[c] += rc * rc;
+          }
         }
-      }
-      s[0] = rr;
-    });
-    std::swap(D0, D1);
-    if (converged(s1[0])) break;
+        s[0] = rr;
+      });
+    };
+    const auto s1 = it == 1 ? sweep(std::true_type{}) : sweep(std::false_type{});
+    if (converged(s1[0])) break;  // at y_k, which the sweep only read
+    std::swap(Y0, Y1);
   }
+  add_correction(Y0);
   stats.iterations = it;
   return stats;
 }
