@@ -446,11 +446,15 @@ double NormalFilterRun::edge_pass() {
   })[0];
 }
 
-// 3. v-step (eq. 23) with the weights of this iteration and the new p; Jacobi-preconditioned
-// CG warm-started from the last v (the matrix is strongly diagonally dominant for small ε, so
-// this takes a few sweeps). Returns the sweeps; throws SolverError when 1000 do not suffice.
+// 3. v-step (eq. 23) with the weights of this iteration and the new p; Chebyshev iteration on
+// Gershgorin's interval (or CG) from the Jacobi guess D⁻¹b the edge pass left in v (the
+// matrix is strongly diagonally dominant for small ε, so this takes one or two sweeps).
+// Returns the sweeps; throws SolverError when 1000 do not suffice.
 int NormalFilterRun::v_step() {
-  v_system_->set_diagonal(v_diag_);
+  // From the Jacobi guess D⁻¹b rather than from the last v: its residual is the
+  // off-diagonal part, ~4ε² of b, where the last v's is the change of v between iterations,
+  // so it needs one sweep fewer (set in the pass that sets the diagonal).
+  v_system_->set_diagonal(v_diag_, &v_rhs_, &v_);
   return v_system_->solve(v_rhs_, v_, 1e-10, 1000, "normal filtering (v-step)").iterations;
 }
 

@@ -227,7 +227,7 @@ void BasicBlockPcg<Stored>::find_diagonal() {
 }
 
 template <class Stored>
-void BasicBlockPcg<Stored>::set_diagonal(const Eigen::VectorXd& d) {
+void BasicBlockPcg<Stored>::set_diagonal(const Eigen::VectorXd& d, const Eigen::VectorXd* b, Eigen::VectorXd* x) {
   // In parallel blocks (the v-step's two million rows at a million faces: serial, this pass
   // took as long as the solve's sweeps); each block notes whether it met a missing or
   // non-positive entry and its largest Gershgorin ratio, and the first bad row is looked for
@@ -253,7 +253,9 @@ void BasicBlockPcg<Stored>::set_diagonal(const Eigen::VectorXd& d) {
         bad |= j < 0;
       }
       bad |= !(di > 0) || !std::isfinite(di);
-      inv_diag_(i) = static_cast<Stored>(1.0 / di);
+      const double inv = 1.0 / di;
+      inv_diag_(i) = static_cast<Stored>(inv);
+      if (x) (*x)(original(i)) = (*b)(original(i)) * inv;
       if (chebyshev_) radius = std::max(radius, double(off_sums_[static_cast<size_t>(i)]) / di);
     }
     block_radius[static_cast<size_t>(i0 / kBlock)] = radius;
