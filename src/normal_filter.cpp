@@ -148,6 +148,8 @@ class NormalFilterRun {
   NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOptions& o, const NormalFilterWeights& weights,
                   const Eigen::MatrixXd& normals0);
   NormalFilterResult run(const ProgressCallback& progress);
+  /// The faces' order in the N-step's solver (reverse Cuthill–McKee under CG; empty: the input's).
+  const std::vector<int>& face_order() const { return order_; }
 
  private:
   void assemble_n_step();
@@ -225,7 +227,9 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
     SparseMatrix Kv = edge_smoothness_matrix(ne_, face_edges_, lines, 2.0 * o.beta * o.epsilon);
     smooth_diag_ = Kv.diagonal();
     // Few sweeps per solve (strongly diagonally dominant): not worth a reordering. CG takes
-    // the matrix over (the largest array here: ~120 MB at a million faces, not copied).
+    // the matrix over (the largest array here: ~120 MB at a million faces, not copied). In
+    // double precision: rounded to single, the diagonal could fall below the right-hand side
+    // plus the off-diagonal row sum, and v rise above 1 (measured: 1 + 6e-8 on flat faces).
     v_system_.emplace(std::move(Kv), /*reorder=*/false);
     // Diagonally dominant by a factor ~1/(4ε²): Chebyshev on Gershgorin's interval, one pass a sweep.
     v_system_->use_chebyshev();
@@ -551,8 +555,15 @@ NormalFilterResult filter_normals(const PreparedMesh& mesh, const NormalFilterOp
                                   const Eigen::MatrixXd& normals0) {
   o.validate();
   if (mesh.num_faces() == 0) throw InvalidInput("normal filtering: the mesh has no faces");
-  NormalFilterResult r = NormalFilterRun(mesh, o, weights, normals0).run(progress);
-  if (o.polish > 0) r.normals = detail::polish_normals(mesh, r.normals, r.v, o.polish, o.polish_range);
+  NormalFilterResult r;
+  std::vector<int> order;  // the N-step's face order, which the polish reuses (when CG's: not empty)
+  {
+    NormalFilterRun run(mesh, o, weights, normals0);  // its arrays are freed before the polish
+    r = run.run(progress);
+    if (o.polish > 0) order = run.face_order();
+  }
+  if (o.polish > 0)
+    r.normals = detail::polish_normals(mesh, r.normals, r.v, o.polish, o.polish_range, std::move(order));
   return r;
 }
 

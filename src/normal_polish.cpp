@@ -12,7 +12,7 @@
 namespace msmesh::detail {
 
 Eigen::MatrixXd polish_normals(const PreparedMesh& mesh, const Eigen::MatrixXd& N, const Eigen::VectorXd& v,
-                               double weight, double range) {
+                               double weight, double range, std::vector<int> face_order) {
   const Topology& topo = mesh.topology();
   const Eigen::MatrixXd& P = mesh.positions();
   const Eigen::Index nf = mesh.num_faces(), ne = topo.num_edges();
@@ -30,8 +30,9 @@ Eigen::MatrixXd polish_normals(const PreparedMesh& mesh, const Eigen::MatrixXd& 
   const Eigen::SparseMatrix<double> A = face_graph_matrix(
       topo, nf, [](Eigen::Index) { return 1.0; }, [&](int e) { return w(e); });
   // Conjugate gradients from N, to a tight residual (a few dozen sweeps: the result is the
-  // same to round-off whatever the mesh's orientation).
-  const BlockPcg pcg(A);
+  // same to round-off whatever the mesh's orientation), in the faces' reverse Cuthill–McKee
+  // order (the caller's when it has one: the same face graph).
+  const BlockPcg pcg = face_order.empty() ? BlockPcg(A) : BlockPcg(A, std::move(face_order));
   const RowMatrixX3 B = N;
   RowMatrixX3 X = N;
   pcg.solve(B, X, 1e-10, 10000, "normal polish");

@@ -107,6 +107,14 @@ BasicBlockPcg<Stored>::BasicBlockPcg(const Eigen::SparseMatrix<double>& A, bool 
 }
 
 template <class Stored>
+BasicBlockPcg<Stored>::BasicBlockPcg(const Eigen::SparseMatrix<double>& A, std::vector<int> order) {
+  if (!order.empty() && order.size() != static_cast<size_t>(A.rows()))
+    throw SolverError("conjugate gradients: an order of " + std::to_string(order.size()) + " rows for a matrix of " +
+                      std::to_string(A.rows()));
+  init(A, /*reorder=*/false, std::move(order));
+}
+
+template <class Stored>
 BasicBlockPcg<Stored>::BasicBlockPcg(Eigen::SparseMatrix<double>&& A, bool reorder) {
   bool sorted = std::is_same_v<Stored, double> && !reorder && A.isCompressed();
   for (Eigen::Index i = 0; sorted && i < A.outerSize(); ++i)
@@ -125,7 +133,7 @@ BasicBlockPcg<Stored>::BasicBlockPcg(Eigen::SparseMatrix<double>&& A, bool reord
 }
 
 template <class Stored>
-void BasicBlockPcg<Stored>::init(const Eigen::SparseMatrix<double>& A, bool reorder) {
+void BasicBlockPcg<Stored>::init(const Eigen::SparseMatrix<double>& A, bool reorder, std::vector<int> order) {
   // A is symmetric, so its compressed columns are its rows: read them in place rather than
   // converting (a copy of A, the largest array of the vertex update).
   Eigen::SparseMatrix<double> compressed;
@@ -138,30 +146,34 @@ void BasicBlockPcg<Stored>::init(const Eigen::SparseMatrix<double>& A, bool reor
   const Eigen::Map<const RowSparse> A0(src->rows(), src->cols(), src->nonZeros(), src->outerIndexPtr(),
                                        src->innerIndexPtr(), src->valuePtr());
   const Eigen::Index n = A0.rows();
-  if (reorder) perm_ = reverse_cuthill_mckee(A0);
+  perm_ = reorder ? reverse_cuthill_mckee(A0) : std::move(order);
   auto old_row = [&](Eigen::Index i) { return perm_.empty() ? static_cast<int>(i) : perm_[static_cast<size_t>(i)]; };
   std::vector<int> inverse(static_cast<size_t>(n));
   for (Eigen::Index i = 0; i < n; ++i) inverse[static_cast<size_t>(old_row(i))] = static_cast<int>(i);
-  // A_ = P A Pᵀ in compressed row-major form, columns sorted within each row.
+  // A_ = P A Pᵀ in compressed row-major form, columns sorted within each row: the row
+  // starts first (a prefix sum of the row lengths), then the rows independently, in parallel.
   A_.resize(n, n);
   A_.resizeNonZeros(A0.nonZeros());
   int* outer = A_.outerIndexPtr();
   int* inner = A_.innerIndexPtr();
   Stored* val = A_.valuePtr();
+  const int* outer0 = A0.outerIndexPtr();
   outer[0] = 0;
-  std::vector<std::pair<int, double>> row;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    row.clear();
-    for (Eigen::Map<const RowSparse>::InnerIterator it(A0, old_row(i)); it; ++it)
-      row.emplace_back(inverse[static_cast<size_t>(it.col())], it.value());
-    std::sort(row.begin(), row.end());
-    int k = outer[i];
-    for (const auto& [c, v] : row) {
-      inner[k] = c;
-      val[k++] = static_cast<Stored>(v);
+  for (Eigen::Index i = 0; i < n; ++i) outer[i + 1] = outer[i] + outer0[old_row(i) + 1] - outer0[old_row(i)];
+  parallel_for_blocks(n, [&](Eigen::Index i0, Eigen::Index i1) {
+    std::vector<std::pair<int, double>> row;
+    for (Eigen::Index i = i0; i < i1; ++i) {
+      row.clear();
+      for (Eigen::Map<const RowSparse>::InnerIterator it(A0, old_row(i)); it; ++it)
+        row.emplace_back(inverse[static_cast<size_t>(it.col())], it.value());
+      std::sort(row.begin(), row.end());
+      int k = outer[i];
+      for (const auto& [c, v] : row) {
+        inner[k] = c;
+        val[k++] = static_cast<Stored>(v);
+      }
     }
-    outer[i + 1] = k;
-  }
+  });
   find_diagonal();
   to_fixed_width();
 }

@@ -21,6 +21,8 @@
 // along the same stored p, so the updated residual follows b − A x; what single precision
 // changes is the matrix itself, by one rounding of each entry (relative 6e-8): the solution is
 // that of a matrix within κ·6e-8 of A, far inside the N-step's tolerance (docs/performance.md).
+// Chebyshev iteration stores its correction x − x₀ and first residual in that precision (their
+// rounding is relative to the residual the solve starts from). Used for the N-step under CG.
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -53,6 +55,10 @@ class BasicBlockPcg {
   /// v-step's is the largest array of the normal filter; it keeps the compressed layout);
   /// otherwise as above.
   explicit BasicBlockPcg(Eigen::SparseMatrix<double>&& A, bool reorder);
+  /// The same in a given order (position i holds original row order[i], a permutation of the
+  /// rows; empty: the rows' own): for a matrix with the pattern of one whose reverse
+  /// Cuthill–McKee order is already known (the polish's, the N-step's).
+  BasicBlockPcg(const Eigen::SparseMatrix<double>& A, std::vector<int> order);
   /// Replaces the diagonal of A by d (#rows, original order). With b and x, also sets
   /// x = D⁻¹b in the same pass: the Jacobi guess, a start for a strongly diagonally dominant
   /// matrix (its residual is the off-diagonal part alone).
@@ -101,7 +107,7 @@ class BasicBlockPcg {
   void learn_spectrum(const std::vector<double>& alpha, const std::vector<double>& beta) const;
   void set_spectrum(double radius);
   void check_diagonal() const;
-  void init(const Eigen::SparseMatrix<double>& A, bool reorder);
+  void init(const Eigen::SparseMatrix<double>& A, bool reorder, std::vector<int> order = {});
   void find_diagonal();
   void to_fixed_width();
   std::vector<int> perm_;          // reverse Cuthill–McKee: position i holds original row perm_[i]; empty: none

@@ -99,6 +99,26 @@ TEST(InternalPcg, BothLayoutsAndPrecisionsSolveToTheTolerance) {
   }
 }
 
+TEST(InternalPcg, AGivenOrderIsUsedAsItIs) {
+  // The order of another solver of the same pattern (the polish takes the N-step's): the same
+  // solution as in the solver's own order, the order kept; one of the wrong length is refused.
+  const Eigen::SparseMatrix<double> A = grid_matrix(40, 3, 0.3);
+  const Eigen::Index n = A.rows();
+  const detail::BlockPcg own(A);
+  ASSERT_FALSE(own.order().empty());
+  std::vector<int> reversed(own.order().rbegin(), own.order().rend());
+  const detail::BlockPcg given(A, reversed);
+  EXPECT_EQ(given.order(), reversed);
+  detail::RowMatrixX3 B(n, 3);
+  for (Eigen::Index i = 0; i < n; ++i) B.row(i) << 1.0, std::sin(0.1 * i), std::cos(0.05 * i);
+  detail::RowMatrixX3 X1 = detail::RowMatrixX3::Zero(n, 3), X2 = X1;
+  own.solve(B, X1, 1e-10, 1000, "test");
+  given.solve(B, X2, 1e-10, 1000, "test");
+  EXPECT_LT((X1 - X2).norm(), 1e-8 * X1.norm());
+  EXPECT_LT((A * Eigen::MatrixXd(X2) - Eigen::MatrixXd(B)).norm(), 1e-9 * B.norm());
+  EXPECT_THROW(detail::BlockPcg(A, std::vector<int>(static_cast<size_t>(n - 1), 0)), SolverError);
+}
+
 TEST(InternalPcg, OneColumnWithAChangedDiagonalInTheCompressedLayout) {
   // Four neighbours per row (the v-step's edge graph has up to four): compressed rows, whose
   // diagonal entries set_diagonal rewrites in place.
