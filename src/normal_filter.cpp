@@ -451,9 +451,9 @@ double NormalFilterRun::edge_pass() {
 }
 
 // 3. v-step (eq. 23) with the weights of this iteration and the new p; Chebyshev iteration on
-// Gershgorin's interval (or CG) from the Jacobi guess D⁻¹b the edge pass left in v (the
-// matrix is strongly diagonally dominant for small ε, so this takes one or two sweeps).
-// Returns the sweeps; throws SolverError when 1000 do not suffice.
+// Gershgorin's interval (or CG) from the Jacobi guess D⁻¹b (the matrix is strongly diagonally
+// dominant for small ε, so this takes one or two sweeps). Returns the sweeps; throws
+// SolverError when 1000 do not suffice.
 int NormalFilterRun::v_step() {
   // From the Jacobi guess D⁻¹b rather than from the last v: its residual is the
   // off-diagonal part, ~4ε² of b, where the last v's is the change of v between iterations,
