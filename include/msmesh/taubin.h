@@ -1,7 +1,8 @@
 // Taubin's λ|μ smoothing (Taubin 1995) with uniform (umbrella) weights: a low-pass filter of
 // the vertex positions that does not shrink the mesh. msmesh uses it to pre-filter the first
-// normals under heavy noise and to measure the noise (noise_estimate.h); it is also the
-// smoothing of Open3D's filter_smooth_taubin, which the benchmarks compare against.
+// normals under heavy noise and to measure the noise (noise_estimate.h). Open3D's
+// filter_smooth_taubin, which the benchmarks compare against, takes the same λ|μ pairs with
+// inverse-distance weights 1/‖x_i − x_j‖ instead, so its results differ (docs/presets.md).
 #pragma once
 #include <Eigen/Core>
 

@@ -199,8 +199,8 @@ def taubin_smooth(V: ArrayLike, F: ArrayLike, iterations: int = 10, lambda_: flo
     """Taubin's lambda|mu smoothing with uniform weights (no shrinkage); returns (#V, 3).
 
     iterations: lambda|mu pairs (>= 0); lambda_ in (0, 1]; mu in [-1, 0) with |mu| > lambda_.
-    The pre-filter of 'auto' under heavy noise, and the smoothing Open3D's filter_smooth_taubin
-    does.
+    The pre-filter of 'auto' under heavy noise. Open3D's filter_smooth_taubin takes the same
+    pairs with inverse-distance weights instead, so its results differ.
     """
     V, F = _checks.mesh(V, F)
     iterations = _checks.integer(iterations, "iterations", minimum=0)
