@@ -1,5 +1,6 @@
 #include "msmesh/normal_filter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <optional>
@@ -481,7 +482,11 @@ bool NormalFilterRun::overlap() const {
 void NormalFilterRun::v_step_beside_next_n_step(bool last, int& v_iterations) {
   if (!last) {
     n_step_rhs();
-    if (n_system_->iterative()) N_next_ = N_;  // warm start
+    if (n_system_->iterative()) {  // warm start: a copy of N, in parallel blocks (31 MB at a million faces)
+      detail::parallel_for_blocks(3 * nf_, [&](Eigen::Index i0, Eigen::Index i1) {
+        std::copy(N_.data() + i0, N_.data() + i1, N_next_.data() + i0);
+      });
+    }
   }
   if (overlap() && !last) {
     // Not a parallel region with an if clause: the loops inside an inactive region ran on
