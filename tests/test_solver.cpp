@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -24,10 +25,14 @@ using namespace msmesh;
 
 namespace {
 
-NormalFilterResult filter_with(const Mesh& m, LinearSolver s, const char* preset = "cad") {
+// solver_tolerance: below 1e-6 every N-step is solved to it; at the default (1e-6) the early
+// ones only to a fraction of the normals' change (normal_filter.cpp, run()).
+NormalFilterResult filter_with(const Mesh& m, LinearSolver s, const char* preset = "cad",
+                               double solver_tolerance = 1e-6) {
   NormalFilterOptions o = preset_options(preset).normals;
   o.solver = s;
   o.tolerance = 0;
+  o.solver_tolerance = solver_tolerance;
   return filter_normals(m.V, m.F, o);
 }
 
@@ -37,19 +42,46 @@ TEST(Solver, ConjugateGradientsMatchCholeskyInTheNormalFilter) {
   const Mesh m = test::noisy_cube(8);
   for (const char* preset : {"cad", "smooth"}) {
     const NormalFilterResult a = filter_with(m, LinearSolver::Cholesky, preset);
-    const NormalFilterResult b = filter_with(m, LinearSolver::CG, preset);
+    const NormalFilterResult b = filter_with(m, LinearSolver::CG, preset, 0.99e-6);
     EXPECT_TRUE(a.n_solver_iterations.empty());
     ASSERT_EQ(b.n_solver_iterations.size(), 30u);
     for (int it : b.n_solver_iterations) {
       EXPECT_GT(it, 0);
       EXPECT_LT(it, 60);  // bounded: the N-step matrix is well conditioned at any size
     }
-    // At the default solver tolerance (1e-6 relative residual) within 1e-5 after 30 iterations.
+    // Every N-step to (just below) the default solver tolerance: within 1e-5 after 30 iterations.
     EXPECT_LT((a.normals - b.normals).cwiseAbs().maxCoeff(), 1e-5) << preset;
     EXPECT_LT((a.v - b.v).cwiseAbs().maxCoeff(), 1e-5) << preset;
   }
   // Auto factors small meshes (exact, and faster there).
   EXPECT_TRUE(filter_with(m, LinearSolver::Auto).n_solver_iterations.empty());
+}
+
+TEST(Solver, EarlyNStepsAreSolvedLooselyAndLandNearTheFactorisation) {
+  // At the default solver tolerance an N-step is solved only to a hundredth of the normals'
+  // last relative change (at most 1e-4, at least 1e-6; normal_filter.cpp, run()); just below it
+  // every N-step is solved to it. The loose early steps take the iterations along another path
+  // to the same minimiser: after 30 iterations (not converged) within 2e-5 of the
+  // factorisation's normals on the cad cube (measured 1.5e-5), 1e-3 on the smooth one, whose
+  // small ADMM penalty leaves a perturbation of the path longer in the iterates (measured
+  // 6.4e-4; the quality figures of docs/quality.md and docs/sweep.md did not move,
+  // docs/performance.md).
+  const Mesh m = test::noisy_cube(8);
+  for (const char* preset : {"cad", "smooth"}) {
+    const NormalFilterResult exact = filter_with(m, LinearSolver::Cholesky, preset);
+    const NormalFilterResult loose = filter_with(m, LinearSolver::CG, preset);
+    const NormalFilterResult tight = filter_with(m, LinearSolver::CG, preset, 0.99e-6);
+    ASSERT_EQ(loose.n_solver_iterations.size(), tight.n_solver_iterations.size());
+    int sum_loose = 0, sum_tight = 0;
+    for (size_t k = 0; k < loose.n_solver_iterations.size(); ++k) {
+      sum_loose += loose.n_solver_iterations[k];
+      sum_tight += tight.n_solver_iterations[k];
+    }
+    EXPECT_LT(sum_loose, 0.9 * sum_tight) << preset;
+    const bool cad = std::string(preset) == "cad";
+    EXPECT_LT((loose.normals - exact.normals).cwiseAbs().maxCoeff(), cad ? 2e-5 : 1e-3) << preset;
+    EXPECT_LT((loose.v - exact.v).cwiseAbs().maxCoeff(), 5e-5) << preset;
+  }
 }
 
 TEST(Solver, ConjugateGradientsRecordTheEnergyOfTheFactorisation) {
@@ -60,6 +92,7 @@ TEST(Solver, ConjugateGradientsRecordTheEnergyOfTheFactorisation) {
   o.record_energy = true;
   o.tolerance = 0;
   o.max_iterations = 10;
+  o.solver_tolerance = 0.99e-6;  // every N-step solved to it (not only to a fraction of the change)
   o.solver = LinearSolver::Cholesky;
   const NormalFilterResult a = filter_normals(m.V, m.F, o);
   o.solver = LinearSolver::CG;
