@@ -163,6 +163,7 @@ class NormalFilterRun {
   double normal_change() const;
   double edge_pass();
   int v_step();
+  bool v_jacobi_suffices() const;
   void v_step_beside_next_n_step(bool last, int& v_iterations);
   bool overlap() const;
   void renumber();
@@ -181,7 +182,8 @@ class NormalFilterRun {
   std::optional<detail::ConstantSystem> n_system_;
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> gt_weight_;  // Gᵀ L per face
   Eigen::VectorXd smooth_diag_, v_rhs_, v_diag_;  // diagonal of 2βε Dᵀ L_W D; the v-step's b and diagonal
-  std::optional<detail::BlockPcg> v_system_;      // the v-step matrix; its diagonal is set per iteration
+  double smooth_diag_max_ = 0;
+  std::optional<detail::BlockPcg> v_system_;  // the v-step matrix; its diagonal is set per iteration
   // The faces are renumbered once into the N-step solver's order (reverse Cuthill–McKee for
   // CG, pcg.h; the input order otherwise), and the edges in the order the faces first meet
   // them: the per-face and per-edge arrays below, the two systems and the iterates all use
@@ -196,6 +198,9 @@ class NormalFilterRun {
   Rows N0r_, N_, N_prev_, N_next_, rhs_, q_, lambda_;
   Eigen::VectorXd v_, w_;
   double n_step_tolerance_ = 0;  // the relative residual at which the next N-step's CG stops
+  double v_tolerance_ = 1e-10;   // the v-step's relative residual
+  double v_rhs_norm_ = 0;        // ‖b‖ of the v-step
+  double v_jacobi_bound2_ = 0;   // (max_e Σ_{f≠e}|a_ef|) Σ_e (Σ_{f≠e}|a_ef|) v_e², from the last edge pass
   NormalFilterResult res_;
 };
 
@@ -232,6 +237,7 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
     }
     SparseMatrix Kv = edge_smoothness_matrix(ne_, face_edges_, lines, 2.0 * o.beta * o.epsilon);
     smooth_diag_ = Kv.diagonal();
+    smooth_diag_max_ = smooth_diag_.size() ? smooth_diag_.maxCoeff() : 0.0;
     // Few sweeps per solve (strongly diagonally dominant): not worth a reordering. CG takes
     // the matrix over (the largest array here: ~120 MB at a million faces, not copied). In
     // double precision: rounded to single, the diagonal could fall below the right-hand side
@@ -241,6 +247,7 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
     v_system_->use_chebyshev();
   }
   v_rhs_ = len_.cwiseProduct(beta_e_) * (o.beta / (2 * o.epsilon));
+  v_rhs_norm_ = v_rhs_.norm();
   v_diag_.resize(ne_);
   if (!o.record_energy) {
     // Only the energy reads the input-order arrays from here on (the renumbered copies serve
@@ -425,13 +432,13 @@ double NormalFilterRun::normal_change() const {
 }
 
 // 2.+4. One pass over the edges: p-step (eq. 22: vector soft threshold of ψ = ∇N − λ/r by
-// γ v² w / r), the multiplier (DESIGN.md step 4: λ += ν r (p − ∇N)), and the diagonal of the
-// v-step with this iteration's weights w; then the IRLA weights of the next iteration from
-// p^{k+1}. Returns ‖p − ∇N‖²_V.
+// γ v² w / r), the multiplier (DESIGN.md step 4: λ += ν r (p − ∇N)), the diagonal d of the
+// v-step with this iteration's weights w and its Jacobi guess v = D⁻¹b (v_step); then the IRLA
+// weights of the next iteration from p^{k+1}. Returns ‖p − ∇N‖²_V.
 double NormalFilterRun::edge_pass() {
   const Eigen::VectorXd& len = len_;
   const NormalFilterOptions& o = o_;
-  return detail::deterministic_sums<1>(ne_, [&](Eigen::Index e0, Eigen::Index e1, std::array<double, 1>& s) {
+  const auto sums = detail::deterministic_sums<2>(ne_, [&](Eigen::Index e0, Eigen::Index e1, std::array<double, 2>& s) {
     for (Eigen::Index e = e0; e < e1; ++e) {
       Eigen::RowVector3d g = Eigen::RowVector3d::Zero(), pe = Eigen::RowVector3d::Zero();
       double pe_norm = 0;
@@ -449,22 +456,38 @@ double NormalFilterRun::edge_pass() {
       lambda_.row(e) += o.relaxation * o.penalty * r;
       q_.row(e) = o.penalty * pe + lambda_.row(e);
       s[0] += len(e) * r.squaredNorm();
-      v_diag_(e) = smooth_diag_(e) + len(e) * (2 * o.gamma * w_(e) * pe_norm + beta_e_(e) * o.beta / (2 * o.epsilon));
+      const double d =
+          smooth_diag_(e) + len(e) * (2 * o.gamma * w_(e) * pe_norm + beta_e_(e) * o.beta / (2 * o.epsilon));
+      v_diag_(e) = d;
+      v_(e) = v_rhs_(e) / d;  // this edge's p-step has read its v
+      s[1] += smooth_diag_(e) * v_(e) * v_(e);
       w_(e) = irla_weight(pe_norm, o);
     }
-  })[0];
+  });
+  v_jacobi_bound2_ = smooth_diag_max_ * sums[1];
+  return sums[0];
 }
 
-// 3. v-step (eq. 23) with the weights of this iteration and the new p; Chebyshev iteration on
-// Gershgorin's interval (or CG) from the Jacobi guess D⁻¹b (the matrix is strongly diagonally
-// dominant for small ε, so this takes one or two sweeps). Returns the sweeps; throws
-// SolverError when 1000 do not suffice.
+// Whether the Jacobi guess y = D⁻¹b that edge_pass left in v already solves the v-step to
+// v_tolerance_. Its residual is −Oy (O: the off-diagonal part, whose row sums of |o_ef| are at
+// most smooth_diag_ = diag(2βε Dᵀ L_W D)), and by Cauchy–Schwarz
+// ‖Oy‖² ≤ Σ_e (Σ_f |o_ef|)(Σ_f |o_ef| y_f²) ≤ (max_e smooth_diag_e) Σ_f smooth_diag_f y_f²,
+// a bound edge_pass sums without a pass over the matrix. It is about 4ε²·b: for the default
+// ε = 1e-3 below the N-step's tolerance while the normals still move.
+bool NormalFilterRun::v_jacobi_suffices() const { return std::sqrt(v_jacobi_bound2_) <= v_tolerance_ * v_rhs_norm_; }
+
+// 3. v-step (eq. 23) with the weights of this iteration and the new p: the Jacobi guess D⁻¹b
+// when it is provably close enough (v_jacobi_suffices: no pass over the matrix), else
+// Chebyshev iteration on Gershgorin's interval (or CG) from it (the matrix is strongly
+// diagonally dominant for small ε: one sweep). Returns the sweeps; throws SolverError when
+// 1000 do not suffice.
 int NormalFilterRun::v_step() {
+  if (v_jacobi_suffices()) return 0;
   // From the Jacobi guess D⁻¹b rather than from the last v: its residual is the
   // off-diagonal part, ~4ε² of b, where the last v's is the change of v between iterations,
   // so it needs one sweep fewer (set in the pass that sets the diagonal).
   v_system_->set_diagonal(v_diag_, &v_rhs_, &v_);
-  return v_system_->solve(v_rhs_, v_, 1e-10, 1000, "normal filtering (v-step)").iterations;
+  return v_system_->solve(v_rhs_, v_, v_tolerance_, 1000, "normal filtering (v-step)").iterations;
 }
 
 // The next N-step needs only p and λ, not v, so it can run beside this iteration's v-step:
@@ -532,14 +555,17 @@ NormalFilterResult NormalFilterRun::run(const ProgressCallback& progress) {
   constexpr double kInexactFraction = 0.01, kInexactMax = 1e-4;
   const double unit_norm = std::max(std::sqrt(area_.sum()), 1e-300);  // ‖1‖_U
   n_step_tolerance_ = inexact ? std::max(o_.solver_tolerance, kInexactMax) : o_.solver_tolerance;
+  v_tolerance_ = std::min(1e-10, o_.solver_tolerance);  // exact: as tight as before the inexact steps
   n_step_rhs();
   N_prev_ = N_;
   n_step(N_, N_prev_);
   for (int k = 0; k < o_.max_iterations; ++k) {
     const double change = normal_change();
     const bool last = k + 1 == o_.max_iterations || change < o_.tolerance;
-    if (inexact)
+    if (inexact) {
       n_step_tolerance_ = std::max(o_.solver_tolerance, std::min(kInexactMax, kInexactFraction * change / unit_norm));
+      v_tolerance_ = n_step_tolerance_;  // v enters the p-step's thresholds: as accurate as N
+    }
     const double resid2 = edge_pass();
     int v_iterations = 0;
     v_step_beside_next_n_step(last, v_iterations);

@@ -41,7 +41,7 @@ NormalFilterResult filter_with(const Mesh& m, LinearSolver s, const char* preset
 TEST(Solver, ConjugateGradientsMatchCholeskyInTheNormalFilter) {
   const Mesh m = test::noisy_cube(8);
   for (const char* preset : {"cad", "smooth"}) {
-    const NormalFilterResult a = filter_with(m, LinearSolver::Cholesky, preset);
+    const NormalFilterResult a = filter_with(m, LinearSolver::Cholesky, preset, 0.99e-6);
     const NormalFilterResult b = filter_with(m, LinearSolver::CG, preset, 0.99e-6);
     EXPECT_TRUE(a.n_solver_iterations.empty());
     ASSERT_EQ(b.n_solver_iterations.size(), 30u);
@@ -58,17 +58,16 @@ TEST(Solver, ConjugateGradientsMatchCholeskyInTheNormalFilter) {
 }
 
 TEST(Solver, EarlyNStepsAreSolvedLooselyAndLandNearTheFactorisation) {
-  // At the default solver tolerance an N-step is solved only to a hundredth of the normals'
-  // last relative change (at most 1e-4, at least 1e-6; normal_filter.cpp, run()); just below it
-  // every N-step is solved to it. The loose early steps take the iterations along another path
-  // to the same minimiser: after 30 iterations (not converged) within 2e-5 of the
-  // factorisation's normals on the cad cube (measured 1.5e-5), 1e-3 on the smooth one, whose
-  // small ADMM penalty leaves a perturbation of the path longer in the iterates (measured
-  // 6.4e-4; the quality figures of docs/quality.md and docs/sweep.md did not move,
-  // docs/performance.md).
+  // At the default solver tolerance an N-step (and the v-step) is solved only to a hundredth of
+  // the normals' last relative change (at most 1e-4, at least 1e-6; normal_filter.cpp, run());
+  // just below it every N-step is solved to it. The loose early steps take the iterations
+  // along another path: after 30 iterations (not converged) within 2e-5 of the factorisation's
+  // normals on the cad cube (measured 1.3e-5), 3e-3 on the smooth one, whose small ADMM
+  // penalty keeps a perturbation of the path longer in the iterates (measured 1.5e-3; the
+  // quality figures of docs/quality.md and docs/sweep.md did not move, docs/performance.md).
   const Mesh m = test::noisy_cube(8);
   for (const char* preset : {"cad", "smooth"}) {
-    const NormalFilterResult exact = filter_with(m, LinearSolver::Cholesky, preset);
+    const NormalFilterResult exact = filter_with(m, LinearSolver::Cholesky, preset, 0.99e-6);
     const NormalFilterResult loose = filter_with(m, LinearSolver::CG, preset);
     const NormalFilterResult tight = filter_with(m, LinearSolver::CG, preset, 0.99e-6);
     ASSERT_EQ(loose.n_solver_iterations.size(), tight.n_solver_iterations.size());
@@ -79,9 +78,35 @@ TEST(Solver, EarlyNStepsAreSolvedLooselyAndLandNearTheFactorisation) {
     }
     EXPECT_LT(sum_loose, 0.9 * sum_tight) << preset;
     const bool cad = std::string(preset) == "cad";
-    EXPECT_LT((loose.normals - exact.normals).cwiseAbs().maxCoeff(), cad ? 2e-5 : 1e-3) << preset;
-    EXPECT_LT((loose.v - exact.v).cwiseAbs().maxCoeff(), 5e-5) << preset;
+    EXPECT_LT((loose.normals - exact.normals).cwiseAbs().maxCoeff(), cad ? 2e-5 : 3e-3) << preset;
+    EXPECT_LT((loose.v - exact.v).cwiseAbs().maxCoeff(), cad ? 5e-5 : 1e-4) << preset;
   }
+}
+
+TEST(Solver, TheVStepTakesItsJacobiGuessWhereItIsProvablyCloseEnough) {
+  // The v-step's matrix is diagonally dominant by ~1/(4ε²): the guess D⁻¹b has a relative
+  // residual of about 4ε², which a bound summed in the edge pass shows below the step's
+  // tolerance at the default ε (1e-3): no sweep (normal_filter.cpp, v_jacobi_suffices). At a
+  // tolerance below 1e-6 every v-step is solved to 1e-10 as before (a sweep each), and at a
+  // large ε the bound fails and the v-step sweeps.
+  const Mesh m = test::noisy_cube(8);
+  NormalFilterOptions o = preset_options("cad").normals;
+  o.tolerance = 0;
+  const NormalFilterResult loose = filter_normals(m.V, m.F, o);
+  ASSERT_EQ(loose.v_solver_iterations.size(), 30u);
+  for (int it : loose.v_solver_iterations) EXPECT_EQ(it, 0);
+  o.solver_tolerance = 0.99e-6;
+  const NormalFilterResult tight = filter_normals(m.V, m.F, o);
+  for (int it : tight.v_solver_iterations) EXPECT_GE(it, 1);
+  EXPECT_LT((loose.v - tight.v).cwiseAbs().maxCoeff(), 5e-5);
+  o.solver_tolerance = 1e-6;
+  o.epsilon = 0.3;
+  const NormalFilterResult wide = filter_normals(m.V, m.F, o);
+  int sweeps = 0;
+  for (int it : wide.v_solver_iterations) sweeps += it;
+  EXPECT_GT(sweeps, 0);
+  EXPECT_GE(wide.v.minCoeff(), 0.0);
+  EXPECT_LE(wide.v.maxCoeff(), 1.0);
 }
 
 TEST(Solver, ConjugateGradientsRecordTheEnergyOfTheFactorisation) {
@@ -105,7 +130,7 @@ TEST(Solver, ConjugateGradientsRecordTheEnergyOfTheFactorisation) {
 
 TEST(Solver, TighterToleranceApproachesTheFactorisation) {
   const Mesh m = test::noisy_cube(6);
-  const NormalFilterResult exact = filter_with(m, LinearSolver::Cholesky);
+  const NormalFilterResult exact = filter_with(m, LinearSolver::Cholesky, "cad", 1e-11);
   double previous = 1e300;
   for (double tol : {1e-4, 1e-7, 1e-11}) {
     NormalFilterOptions o = preset_options("cad").normals;
