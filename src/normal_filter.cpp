@@ -495,6 +495,7 @@ int NormalFilterRun::v_step() {
 // thread; measured faster than the two one after the other on two threads each). Same
 // arithmetic either way.
 bool NormalFilterRun::overlap() const {
+  if (v_jacobi_suffices()) return false;  // no v-step to run beside: the N-step takes both threads
 #ifdef _OPENMP
   // With more than two threads and enough edges for the v-step's own loops to spread, the
   // v-step keeps all threads instead (inside a section it would run on one).
