@@ -549,7 +549,7 @@ NormalFilterResult NormalFilterRun::run(const ProgressCallback& progress) {
   // move, not to solver_tolerance: it stops at kInexactFraction times the last relative change
   // ‖N^k − N^{k−1}‖_U / ‖1‖_U, at most kInexactMax (also the first N-step's: the iterations
   // correct it), never below solver_tolerance (reached as the change falls). The 1.3M-face
-  // sphere: 275 → ~190 sweeps, MSAE the same to 4 digits; docs/quality.md's printed digits the
+  // sphere: 275 → 205 sweeps, MSAE the same to 4 digits; docs/quality.md's printed digits the
   // same (docs/performance.md). The factorisation solves exactly anyway, and a tolerance below
   // kSingleMinTolerance (preset paper's, exact comparisons) holds for every N-step.
   const bool inexact = o_.solver_tolerance >= kSingleMinTolerance;
