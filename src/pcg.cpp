@@ -564,8 +564,9 @@ double smallest_tridiagonal_eigenvalue(const std::vector<double>& a, const std::
 }  // namespace
 
 template <class Stored>
-void BasicBlockPcg<Stored>::use_chebyshev() {
+void BasicBlockPcg<Stored>::use_chebyshev(bool gershgorin_lower) {
   chebyshev_ = true;
+  gershgorin_lower_ = gershgorin_lower;
   // The off-diagonal row sums Σ_{j≠i} |a_ij| of the matrix as stored (they stay when
   // set_diagonal changes the diagonal).
   const Eigen::Index n = size();
@@ -599,7 +600,7 @@ void BasicBlockPcg<Stored>::set_spectrum(double radius) {
   // Gershgorin's interval, under 1e-5 with the learnt one).
   lambda_max_ = 1 + radius;
   const double lower = 1 - radius;
-  lambda_min_ = lower > 0 && lambda_max_ <= kGershgorinKappa * lower ? lower : 0;
+  lambda_min_ = lower > 0 && (gershgorin_lower_ || lambda_max_ <= kGershgorinKappa * lower) ? lower : 0;
 }
 
 template <class Stored>

@@ -78,8 +78,10 @@ class BasicBlockPcg {
   /// diagonally dominant (the v-step's; recomputed by set_diagonal), else from the Lanczos
   /// coefficients of the first CG solve of at least kLanczosSweeps sweeps (the N-step's).
   /// CG takes over a solve that does not converge at the promised rate (and learns the
-  /// spectrum again).
-  void use_chebyshev();
+  /// spectrum again). `gershgorin_lower`: the lower end from Gershgorin whatever the ratio of
+  /// the ends, for a single solve that has no CG solve before it to learn from (the polish's
+  /// I + Laplacian, where Gershgorin's 1/max_i a_ii is also the bound that A ≥ I gives).
+  void use_chebyshev(bool gershgorin_lower = false);
   /// The order CG works in: position i holds original row order()[i]; empty when the rows
   /// keep their order.
   const std::vector<int>& order() const { return perm_; }
@@ -128,6 +130,7 @@ class BasicBlockPcg {
   static constexpr double kGershgorinKappa = 1.1;
   std::vector<float> off_sums_;  // Σ_{j≠i} |a_ij| per row (use_chebyshev)
   bool chebyshev_ = false;
+  bool gershgorin_lower_ = false;  // use_chebyshev's argument
   double lambda_max_ = 0;
   mutable double lambda_min_ = 0;
   Eigen::Index bad_row_ = -1;  // a row (original order) whose diagonal is not positive, or -1
