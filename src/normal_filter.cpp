@@ -483,10 +483,10 @@ bool NormalFilterRun::v_jacobi_suffices() const { return std::sqrt(v_jacobi_boun
 // 1000 do not suffice.
 int NormalFilterRun::v_step() {
   if (v_jacobi_suffices()) return 0;
-  // From the Jacobi guess D⁻¹b rather than from the last v: its residual is the
-  // off-diagonal part, ~4ε² of b, where the last v's is the change of v between iterations,
-  // so it needs one sweep fewer (set in the pass that sets the diagonal).
-  v_system_->set_diagonal(v_diag_, &v_rhs_, &v_);
+  // From the Jacobi guess D⁻¹b that edge_pass left in v rather than from the last v: its
+  // residual is the off-diagonal part, ~4ε² of b, where the last v's is the change of v
+  // between iterations, so it needs one sweep fewer.
+  v_system_->set_diagonal(v_diag_);
   return v_system_->solve(v_rhs_, v_, v_tolerance_, 1000, "normal filtering (v-step)").iterations;
 }
 

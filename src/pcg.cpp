@@ -239,7 +239,7 @@ void BasicBlockPcg<Stored>::find_diagonal() {
 }
 
 template <class Stored>
-void BasicBlockPcg<Stored>::set_diagonal(const Eigen::VectorXd& d, const Eigen::VectorXd* b, Eigen::VectorXd* x) {
+void BasicBlockPcg<Stored>::set_diagonal(const Eigen::VectorXd& d) {
   // In parallel blocks (the v-step's two million rows at a million faces: serial, this pass
   // took as long as the solve's sweeps); each block notes whether it met a missing or
   // non-positive entry and its largest Gershgorin ratio, and the first bad row is looked for
@@ -267,7 +267,6 @@ void BasicBlockPcg<Stored>::set_diagonal(const Eigen::VectorXd& d, const Eigen::
       bad |= !(di > 0) || !std::isfinite(di);
       const double inv = 1.0 / di;
       inv_diag_(i) = static_cast<Stored>(inv);
-      if (x) (*x)(original(i)) = (*b)(original(i)) * inv;
       if (chebyshev_) radius = std::max(radius, double(off_sums_[static_cast<size_t>(i)]) / di);
     }
     block_radius[static_cast<size_t>(i0 / kBlock)] = radius;

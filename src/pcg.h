@@ -59,10 +59,8 @@ class BasicBlockPcg {
   /// rows; empty: the rows' own): for a matrix with the pattern of one whose reverse
   /// Cuthill–McKee order is already known (the polish's, the N-step's).
   BasicBlockPcg(const Eigen::SparseMatrix<double>& A, std::vector<int> order);
-  /// Replaces the diagonal of A by d (#rows, original order). With b and x, also sets
-  /// x = D⁻¹b in the same pass: the Jacobi guess, a start for a strongly diagonally dominant
-  /// matrix (its residual is the off-diagonal part alone).
-  void set_diagonal(const Eigen::VectorXd& d, const Eigen::VectorXd* b = nullptr, Eigen::VectorXd* x = nullptr);
+  /// Replaces the diagonal of A by d (#rows, original order).
+  void set_diagonal(const Eigen::VectorXd& d);
   /// Solves A X = B (n by 3) in place, X holding the warm start. Stops when every column's
   /// residual is below `relative_tolerance` × ‖b‖ (or exactly 0). Throws SolverError naming
   /// `what` when `max_iterations` do not suffice, the numbers stop being finite or the
