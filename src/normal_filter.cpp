@@ -274,11 +274,6 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
 // N-step matrix (eq. 20 in matrix form, DESIGN.md step 1): 2αS + r Gᵀ L G; constant. Also the
 // Gᵀ L weights of its right-hand side.
 void NormalFilterRun::assemble_n_step() {
-  // Row f: its fidelity weight plus r·len(e) on the diagonal for each interior edge e of f,
-  // −r·len(e) towards the face across e.
-  const SparseMatrix A = detail::face_graph_matrix(
-      topo_, nf_, [&](Eigen::Index f) { return fid_weight_(f); },
-      [&](int e) { return o_.penalty * ops_.edge_lengths(e); });
   // Auto: the factorisation below kCgMinFaces faces (cheap there, and exact), conjugate
   // gradients above (linear cost, where the factor grows like n^1.5), unless per-face α
   // weights switch the fidelity off somewhere (inpainting): the matrix then loses its
@@ -301,7 +296,15 @@ void NormalFilterRun::assemble_n_step() {
   const Method method = !use_cg                                      ? Method::Cholesky
                         : o_.solver_tolerance >= kSingleMinTolerance ? Method::CgSingle
                                                                      : Method::Cg;
-  n_system_.emplace(A, method, "normal filtering (N-step)");
+  // Row f: its fidelity weight plus r·len(e) on the diagonal for each interior edge e of f,
+  // −r·len(e) towards the face across e. CG takes the rows straight into its own layout (no
+  // assembled matrix: 0.2 s less at 1.3M faces); the factorisation needs the matrix.
+  const auto diagonal = [&](Eigen::Index f) { return fid_weight_(f); };
+  const auto weight = [&](int e) { return o_.penalty * ops_.edge_lengths(e); };
+  if (use_cg)
+    n_system_.emplace(nf_, detail::face_graph_rows(topo_, diagonal, weight), method, "normal filtering (N-step)");
+  else
+    n_system_.emplace(detail::face_graph_matrix(topo_, nf_, diagonal, weight), method, "normal filtering (N-step)");
 
   // Gᵀ L per face: face f meets edge face_edges(f,k) with sign gt_sign(f,k) (+1 when f is the
   // edge's first face, −1 for the second, 0 when the edge carries no gradient), so the

@@ -27,14 +27,14 @@ Eigen::MatrixXd polish_normals(const PreparedMesh& mesh, const Eigen::MatrixXd& 
     w(e) = weight * ve * ve * std::exp(-d2 * inv_two_sigma2) * len;
   });
   // I + (the face-graph Laplacian of w): symmetric, diagonally dominant (κ ≤ 1 + 6 λ max len).
-  const Eigen::SparseMatrix<double> A = face_graph_matrix(
-      topo, nf, [](Eigen::Index) { return 1.0; }, [&](int e) { return w(e); });
+  const auto one = [](Eigen::Index) { return 1.0; };
+  const auto edge_weight = [&](int e) { return w(e); };
   // Chebyshev iteration on Gershgorin's interval from N, to a tight residual (a few dozen
   // sweeps: the result is the same to round-off whatever the mesh's orientation), in the
   // faces' reverse Cuthill–McKee order (the caller's when it has one: the same face graph).
   // One pass per sweep where CG made three, for a few sweeps more: the 82K sphere 42 CG sweeps
   // against 50, the 1.3M one's polish 36 % fewer CPU samples (docs/performance.md).
-  BlockPcg pcg = face_order.empty() ? BlockPcg(A) : BlockPcg(A, std::move(face_order));
+  BlockPcg pcg(nf, face_graph_rows(topo, one, edge_weight), std::move(face_order));
   pcg.use_chebyshev(/*gershgorin_lower=*/true);
   const RowMatrixX3 B = N;
   RowMatrixX3 X = N;

@@ -37,14 +37,15 @@ RowMatrixX3 to_rows(const Eigen::MatrixXd& M) { return RowMatrixX3(M); }
 
 namespace {
 
-// Reverse Cuthill–McKee order of the graph of the symmetric matrix A (new position → old
-// row): neighbours end up close in memory, so the gathers of the matrix–vector product hit
-// the cache. Scanned meshes often list their vertices in scan order, not surface order (the
-// Cone's faces span 5800 vertex indices on median); there this makes CG sweeps ~2× cheaper.
-std::vector<int> reverse_cuthill_mckee(const Eigen::Map<const RowSparse>& A) {
-  const int n = static_cast<int>(A.rows());
-  std::vector<int> degree(static_cast<size_t>(n));
-  for (int i = 0; i < n; ++i) degree[static_cast<size_t>(i)] = A.outerIndexPtr()[i + 1] - A.outerIndexPtr()[i];
+// Reverse Cuthill–McKee order of a symmetric matrix's graph (new position → old row), given
+// each row's entry count `degree` (the diagonal included) and `for_neighbours(u, visit)`, which
+// calls visit(w) for the columns w of row u (u itself may be among them): neighbours end up
+// close in memory, so the gathers of the matrix–vector product hit the cache. Scanned meshes
+// often list their vertices in scan order, not surface order (the Cone's faces span 5800
+// vertex indices on median); there this makes CG sweeps ~2× cheaper.
+template <class ForNeighbours>
+std::vector<int> reverse_cuthill_mckee(const std::vector<int>& degree, ForNeighbours&& for_neighbours) {
+  const int n = static_cast<int>(degree.size());
   std::vector<int> order;
   order.reserve(static_cast<size_t>(n));
   std::vector<char> seen(static_cast<size_t>(n), 0);
@@ -62,13 +63,12 @@ std::vector<int> reverse_cuthill_mckee(const Eigen::Map<const RowSparse>& A) {
       for (; head < level_end; ++head) {
         const int u = out[head];
         nbrs.clear();
-        for (Eigen::Map<const RowSparse>::InnerIterator it(A, u); it; ++it) {
-          const int w = static_cast<int>(it.col());
+        for_neighbours(u, [&](int w) {
           if (!mark[static_cast<size_t>(w)]) {
             mark[static_cast<size_t>(w)] = 1;
             nbrs.push_back(w);
           }
-        }
+        });
         std::sort(nbrs.begin(), nbrs.end(), [&](int a, int b) {
           return degree[static_cast<size_t>(a)] != degree[static_cast<size_t>(b)]
                      ? degree[static_cast<size_t>(a)] < degree[static_cast<size_t>(b)]
@@ -99,6 +99,25 @@ std::vector<int> reverse_cuthill_mckee(const Eigen::Map<const RowSparse>& A) {
   return order;
 }
 
+// The same for the compressed rows of a symmetric matrix.
+std::vector<int> reverse_cuthill_mckee(const Eigen::Map<const RowSparse>& A) {
+  std::vector<int> degree(static_cast<size_t>(A.rows()));
+  for (Eigen::Index i = 0; i < A.rows(); ++i)
+    degree[static_cast<size_t>(i)] = A.outerIndexPtr()[i + 1] - A.outerIndexPtr()[i];
+  return reverse_cuthill_mckee(degree, [&](int u, auto&& visit) {
+    for (Eigen::Map<const RowSparse>::InnerIterator it(A, u); it; ++it) visit(static_cast<int>(it.col()));
+  });
+}
+
+// Sorts m (column, value) pairs by column, stably (a few entries: insertion).
+inline void sort_entries(int* col, double* val, int m) {
+  for (int a = 1; a < m; ++a)
+    for (int k = a; k > 0 && col[k] < col[k - 1]; --k) {
+      std::swap(col[k], col[k - 1]);
+      std::swap(val[k], val[k - 1]);
+    }
+}
+
 }  // namespace
 
 template <class Stored>
@@ -112,6 +131,87 @@ BasicBlockPcg<Stored>::BasicBlockPcg(const Eigen::SparseMatrix<double>& A, std::
     throw SolverError("conjugate gradients: an order of " + std::to_string(order.size()) + " rows for a matrix of " +
                       std::to_string(A.rows()));
   init(A, /*reorder=*/false, std::move(order));
+}
+
+template <class Stored>
+BasicBlockPcg<Stored>::BasicBlockPcg(Eigen::Index n, const FixedWidthRows& rows, std::vector<int> order) {
+  if (!order.empty() && order.size() != static_cast<size_t>(n))
+    throw SolverError("conjugate gradients: an order of " + std::to_string(order.size()) + " rows for a matrix of " +
+                      std::to_string(n));
+  // The rows in their own numbering, each column once: repeats summed in the order of their
+  // columns (as the assembled matrix's merge), then the diagonal and the rest apart.
+  constexpr int W = kEllWidth;
+  std::vector<int> cols(static_cast<size_t>(W * n), -1), count(static_cast<size_t>(n));
+  std::vector<double> vals(static_cast<size_t>(W * n)), diag(static_cast<size_t>(n));
+  std::vector<char> too_wide(static_cast<size_t>((n + kBlock - 1) / kBlock), 0);
+  parallel_for_blocks(n, [&](Eigen::Index i0, Eigen::Index i1) {
+    for (Eigen::Index i = i0; i < i1; ++i) {
+      int* c = cols.data() + W * i;
+      double* v = vals.data() + W * i;
+      const int m = rows(i, &diag[static_cast<size_t>(i)], c, v);
+      if (m > W) {
+        too_wide[static_cast<size_t>(i0 / kBlock)] = 1;
+        return;
+      }
+      sort_entries(c, v, m);
+      int u = 0;
+      for (int a = 0; a < m; ++a) {
+        if (u > 0 && c[a] == c[u - 1]) {
+          v[u - 1] += v[a];
+        } else {
+          c[u] = c[a];
+          v[u++] = v[a];
+        }
+      }
+      count[static_cast<size_t>(i)] = u;
+    }
+  });
+  if (std::find(too_wide.begin(), too_wide.end(), 1) != too_wide.end())
+    throw SolverError("conjugate gradients: a row of a fixed-width matrix has more than " + std::to_string(W) +
+                      " entries beside the diagonal");
+  if (order.empty()) {
+    std::vector<int> degree(count.size());
+    for (size_t i = 0; i < count.size(); ++i) degree[i] = 1 + count[i];
+    order = reverse_cuthill_mckee(degree, [&](int u, auto&& visit) {
+      for (int k = 0; k < count[static_cast<size_t>(u)]; ++k) visit(cols[static_cast<size_t>(W * u + k)]);
+    });
+  }
+  perm_ = std::move(order);
+  std::vector<int> inverse(static_cast<size_t>(n));
+  for (Eigen::Index i = 0; i < n; ++i)
+    inverse[static_cast<size_t>(perm_[static_cast<size_t>(i)])] = static_cast<int>(i);
+  // Row i of P A Pᵀ: its entries sorted by their new columns, padded with zeros at column i;
+  // every value rounded to Stored once, as the copy of an assembled matrix does.
+  ell_cols_.resize(static_cast<size_t>(W * n));
+  ell_vals_.resize(static_cast<size_t>(W * n));
+  ell_diag_.resize(static_cast<size_t>(n));
+  inv_diag_.resize(n);
+  std::vector<char> bad(too_wide.size(), 0);
+  parallel_for_blocks(n, [&](Eigen::Index i0, Eigen::Index i1) {
+    for (Eigen::Index i = i0; i < i1; ++i) {
+      const size_t o = static_cast<size_t>(perm_[static_cast<size_t>(i)]);
+      int c[W];
+      double v[W];
+      const int m = count[o];
+      for (int k = 0; k < m; ++k) {
+        c[k] = inverse[static_cast<size_t>(cols[W * o + k])];
+        v[k] = vals[W * o + k];
+      }
+      sort_entries(c, v, m);
+      for (int k = 0; k < W; ++k) {
+        ell_cols_[static_cast<size_t>(W * i + k)] = k < m ? c[k] : static_cast<int>(i);
+        ell_vals_[static_cast<size_t>(W * i + k)] = k < m ? static_cast<Stored>(v[k]) : Stored(0);
+      }
+      const Stored d = static_cast<Stored>(diag[o]);
+      ell_diag_[static_cast<size_t>(i)] = d;
+      inv_diag_(i) = static_cast<Stored>(1.0 / double(d));
+      if (!(double(d) > 0) || !std::isfinite(double(d))) bad[static_cast<size_t>(i0 / kBlock)] = 1;
+    }
+  });
+  A_ = Eigen::SparseMatrix<Stored>();  // (0 by 0: with n = 0 the dispatch takes the compressed layout, as before)
+  if (std::find(bad.begin(), bad.end(), 1) != bad.end())
+    for (Eigen::Index i = 0; i < n && bad_row_ < 0; ++i)
+      note_bad_diagonal(i, double(ell_diag_[static_cast<size_t>(i)]));
 }
 
 template <class Stored>
@@ -220,7 +320,6 @@ void BasicBlockPcg<Stored>::find_diagonal() {
   const int* outer = A_.outerIndexPtr();
   const int* inner = A_.innerIndexPtr();
   const Stored* val = A_.valuePtr();
-  auto old_row = [&](Eigen::Index i) { return perm_.empty() ? static_cast<int>(i) : perm_[static_cast<size_t>(i)]; };
   diag_pos_.assign(static_cast<size_t>(n), -1);
   inv_diag_.resize(n);
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -230,12 +329,18 @@ void BasicBlockPcg<Stored>::find_diagonal() {
         d += val[j];
         diag_pos_[static_cast<size_t>(i)] = j;
       }
-    if (bad_row_ < 0 && (!(d > 0) || !std::isfinite(d))) {
-      bad_row_ = old_row(i);
-      bad_value_ = d;
-    }
+    note_bad_diagonal(i, d);
     inv_diag_(i) = static_cast<Stored>(1.0 / d);
   }
+}
+
+// Notes row i (position in the order) as the first with a diagonal entry d that is not
+// positive, unless one is noted already.
+template <class Stored>
+void BasicBlockPcg<Stored>::note_bad_diagonal(Eigen::Index i, double d) {
+  if (bad_row_ >= 0 || (d > 0 && std::isfinite(d))) return;
+  bad_row_ = perm_.empty() ? i : perm_[static_cast<size_t>(i)];
+  bad_value_ = d;
 }
 
 template <class Stored>

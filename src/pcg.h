@@ -26,6 +26,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,12 @@ namespace msmesh::detail {
 
 using RowSparse = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
 using RowMatrixX3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+/// A symmetric matrix with at most three entries beside the diagonal in each row (a face
+/// graph's), given row by row instead of assembled: row(i, diag, cols, vals) writes row i's
+/// diagonal entry into *diag and its other entries (column numbers, any order; a repeated
+/// column is summed) into cols and vals, and returns their number, at most three.
+using FixedWidthRows = std::function<int(Eigen::Index row, double* diag, int* cols, double* vals)>;
 
 struct PcgStats {
   int iterations = 0;              ///< sweeps of the slowest column
@@ -59,6 +66,11 @@ class BasicBlockPcg {
   /// rows; empty: the rows' own): for a matrix with the pattern of one whose reverse
   /// Cuthill–McKee order is already known (the polish's, the N-step's).
   BasicBlockPcg(const Eigen::SparseMatrix<double>& A, std::vector<int> order);
+  /// The n by n matrix of `rows`, straight into the fixed-width layout below (no compressed
+  /// matrix, no copy of it: the same products, bit for bit, as from the assembled matrix), in
+  /// `order` (position i holds row order[i]) or, when that is empty, in the rows' reverse
+  /// Cuthill–McKee order. Throws SolverError when a row has more than three entries.
+  BasicBlockPcg(Eigen::Index n, const FixedWidthRows& rows, std::vector<int> order);
   /// Replaces the diagonal of A by d (#rows, original order).
   void set_diagonal(const Eigen::VectorXd& d);
   /// Solves A X = B (n by 3) in place, X holding the warm start. Stops when every column's
@@ -108,6 +120,7 @@ class BasicBlockPcg {
   void set_spectrum(double radius);
   void check_diagonal() const;
   void init(const Eigen::SparseMatrix<double>& A, bool reorder, std::vector<int> order = {});
+  void note_bad_diagonal(Eigen::Index i, double d);
   void find_diagonal();
   void to_fixed_width();
   std::vector<int> perm_;          // reverse Cuthill–McKee: position i holds original row perm_[i]; empty: none

@@ -57,6 +57,18 @@ class ConstantSystem {
       chol_ = std::make_unique<FixedCholesky>(A, what_);
     }
   }
+  /// The same for CG (Method Cg or CgSingle) on the n by n matrix of fixed-width `rows`
+  /// (pcg.h), never assembled; in the rows' reverse Cuthill–McKee order.
+  ConstantSystem(Eigen::Index n, const FixedWidthRows& rows, Method method, std::string what) : what_(std::move(what)) {
+    if (method == Method::Cg) {
+      pcg_ = std::make_unique<BlockPcg>(n, rows, std::vector<int>());
+    } else if (method == Method::CgSingle) {
+      pcg_single_ = std::make_unique<SingleBlockPcg>(n, rows, std::vector<int>());
+      pcg_single_->use_chebyshev();
+    } else {
+      throw SolverError(what_ + ": a factorisation needs the assembled matrix");
+    }
+  }
   /// Solves A X = B; X holds the warm start for CG. Returns the CG sweeps, or −1 when the
   /// system was factored. Throws SolverError naming the system.
   int solve(const RowMatrixX3& B, RowMatrixX3& X, double relative_tolerance) const {

@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -117,6 +118,73 @@ TEST(InternalPcg, AGivenOrderIsUsedAsItIs) {
   EXPECT_LT((X1 - X2).norm(), 1e-8 * X1.norm());
   EXPECT_LT((A * Eigen::MatrixXd(X2) - Eigen::MatrixXd(B)).norm(), 1e-9 * B.norm());
   EXPECT_THROW(detail::BlockPcg(A, std::vector<int>(static_cast<size_t>(n - 1), 0)), SolverError);
+}
+
+TEST(InternalPcg, FixedWidthRowsGiveTheAssembledMatrixsSolverBitForBit) {
+  // The rows of grid_matrix(…, 3, …) handed over one by one (the N-step's and the polish's
+  // face graphs): the same order, the same products and so the same solution to the last bit
+  // as the solver of the assembled matrix, in both precisions and with a given order; the
+  // entries in any order, a repeated column summed (one link split in two here).
+  const Eigen::SparseMatrix<double> A = grid_matrix(30, 3, 0.3);
+  const Eigen::Index n = A.rows();
+  const Eigen::Map<const detail::RowSparse> R(n, n, A.nonZeros(), A.outerIndexPtr(), A.innerIndexPtr(), A.valuePtr());
+  const detail::FixedWidthRows rows = [&](Eigen::Index i, double* diag, int* cols, double* vals) {
+    int m = 0;
+    for (Eigen::Map<const detail::RowSparse>::InnerIterator it(R, i); it; ++it)
+      if (it.col() == i) {
+        *diag = it.value();
+      } else {
+        cols[m] = static_cast<int>(it.col());
+        vals[m++] = it.value();
+      }
+    std::reverse(cols, cols + m);
+    std::reverse(vals, vals + m);
+    if (m == 1) {  // the one link split into two halves of the same column
+      cols[1] = cols[0];
+      vals[1] = vals[0] = 0.5 * vals[0];
+      m = 2;
+    }
+    return m;
+  };
+  detail::RowMatrixX3 B(n, 3);
+  for (Eigen::Index i = 0; i < n; ++i) B.row(i) << 1.0, std::sin(0.1 * i), std::cos(0.05 * i);
+  auto solution = [&](const auto& pcg) {
+    detail::RowMatrixX3 X = detail::RowMatrixX3::Zero(n, 3);
+    pcg.solve(B, X, 1e-8, 1000, "test");
+    return X;
+  };
+  const detail::BlockPcg assembled(A);
+  const detail::BlockPcg from_rows(n, rows, {});
+  EXPECT_EQ(from_rows.order(), assembled.order());
+  EXPECT_EQ(solution(from_rows), solution(assembled));
+  EXPECT_EQ(solution(detail::SingleBlockPcg(n, rows, {})), solution(detail::SingleBlockPcg(A)));
+  std::vector<int> reversed(assembled.order().rbegin(), assembled.order().rend());
+  EXPECT_EQ(solution(detail::BlockPcg(n, rows, reversed)), solution(detail::BlockPcg(A, reversed)));
+  EXPECT_LT((A * Eigen::MatrixXd(solution(from_rows)) - Eigen::MatrixXd(B)).norm(), 1e-7 * B.norm());
+  // Four entries beside the diagonal, a wrong order's length, a diagonal that is not positive.
+  const detail::FixedWidthRows wide = [](Eigen::Index i, double* diag, int* cols, double* vals) {
+    *diag = 5;
+    for (int k = 0; k < 4; ++k) {
+      cols[k] = static_cast<int>((i + k + 1) % 10);
+      vals[k] = -1;
+    }
+    return 4;
+  };
+  EXPECT_THROW(detail::BlockPcg(10, wide, {}), SolverError);
+  EXPECT_THROW(detail::BlockPcg(n, rows, std::vector<int>(static_cast<size_t>(n - 1), 0)), SolverError);
+  const detail::FixedWidthRows negative = [&](Eigen::Index i, double* diag, int* cols, double* vals) {
+    const int m = rows(i, diag, cols, vals);
+    if (i == 7) *diag = -1;
+    return m;
+  };
+  const detail::BlockPcg bad(n, negative, {});
+  detail::RowMatrixX3 X = detail::RowMatrixX3::Zero(n, 3);
+  try {
+    bad.solve(B, X, 1e-8, 1000, "test");
+    ADD_FAILURE() << "no error for a negative diagonal entry";
+  } catch (const SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("diagonal entry 7 = -1"), std::string::npos) << e.what();
+  }
 }
 
 TEST(InternalPcg, OneColumnWithAChangedDiagonalInTheCompressedLayout) {
