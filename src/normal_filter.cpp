@@ -236,7 +236,8 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
       for (int k = 0; k < 3; ++k) lines(3 * i + k) = ops_.line_lengths(3 * f + k);
     }
     SparseMatrix Kv = edge_smoothness_matrix(ne_, face_edges_, lines, 2.0 * o.beta * o.epsilon);
-    smooth_diag_ = Kv.diagonal();
+    smooth_diag_.resize(ne_);
+    detail::parallel_for(ne_, [&](Eigen::Index e) { smooth_diag_(e) = Kv.coeff(e, e); });
     smooth_diag_max_ = smooth_diag_.size() ? smooth_diag_.maxCoeff() : 0.0;
     // Few sweeps per solve (strongly diagonally dominant): not worth a reordering. CG takes
     // the matrix over (the largest array here: ~120 MB at a million faces, not copied). In

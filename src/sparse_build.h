@@ -93,6 +93,7 @@ Eigen::SparseMatrix<double> symmetric_from_rows(Eigen::Index n, Capacity&& capac
   std::vector<Eigen::Index> cap;
   std::vector<int> col;
   std::vector<double> val;
+  std::vector<size_t> start;
   Eigen::Index nnz = 0;
   for (Eigen::Index r0 = 0; r0 < n; r0 += kBlockRows) {
     const Eigen::Index rows = std::min(kBlockRows, n - r0);
@@ -112,18 +113,21 @@ Eigen::SparseMatrix<double> symmetric_from_rows(Eigen::Index n, Capacity&& capac
           bl.count[static_cast<size_t>(i)] = static_cast<int>(merge_row(col.data() + b, val.data() + b, m, n));
         },
         row_weight);
-    size_t total = 0;
-    for (const int c : bl.count) total += static_cast<size_t>(c);
+    // Compacted in parallel, each row to the sum of the counts before it.
+    start.assign(static_cast<size_t>(rows) + 1, 0);
+    for (Eigen::Index i = 0; i < rows; ++i)
+      start[static_cast<size_t>(i) + 1] = start[static_cast<size_t>(i)] + bl.count[static_cast<size_t>(i)];
+    const size_t total = start.back();
     bl.col.resize(total);
     bl.val.resize(total);
-    size_t k = 0;
-    for (Eigen::Index i = 0; i < rows; ++i) {
-      const size_t b = static_cast<size_t>(cap[static_cast<size_t>(i)]);
-      const size_t c = static_cast<size_t>(bl.count[static_cast<size_t>(i)]);
-      std::copy_n(col.data() + b, c, bl.col.data() + k);
-      std::copy_n(val.data() + b, c, bl.val.data() + k);
-      k += c;
-    }
+    parallel_for_blocks(rows, [&](Eigen::Index i0, Eigen::Index i1) {
+      for (Eigen::Index i = i0; i < i1; ++i) {
+        const size_t b = static_cast<size_t>(cap[static_cast<size_t>(i)]);
+        const size_t c = static_cast<size_t>(bl.count[static_cast<size_t>(i)]);
+        std::copy_n(col.data() + b, c, bl.col.data() + start[static_cast<size_t>(i)]);
+        std::copy_n(val.data() + b, c, bl.val.data() + start[static_cast<size_t>(i)]);
+      }
+    });
     nnz += static_cast<Eigen::Index>(total);
   }
   std::vector<int>().swap(col);
@@ -132,15 +136,23 @@ Eigen::SparseMatrix<double> symmetric_from_rows(Eigen::Index n, Capacity&& capac
   A.resizeNonZeros(nnz);
   int* outer = A.outerIndexPtr();
   outer[0] = 0;
-  Eigen::Index i = 0, at = 0;
-  for (Block& bl : blocks) {
-    for (const int c : bl.count) {
+  Eigen::Index i = 0;
+  std::vector<Eigen::Index> at(blocks.size());
+  for (size_t b = 0; b < blocks.size(); ++b) {
+    at[b] = outer[i];
+    for (const int c : blocks[b].count) {
       outer[i + 1] = outer[i] + c;
       ++i;
     }
-    std::copy(bl.col.begin(), bl.col.end(), A.innerIndexPtr() + at);
-    std::copy(bl.val.begin(), bl.val.end(), A.valuePtr() + at);
-    at += static_cast<Eigen::Index>(bl.col.size());
+  }
+  // The blocks into place side by side (in parallel: the first touch of A's pages is most of
+  // this copy's cost).
+  const Eigen::Index nb = static_cast<Eigen::Index>(blocks.size());
+#pragma omp parallel for schedule(dynamic) if (nnz >= kParallelMin)
+  for (Eigen::Index b = 0; b < nb; ++b) {
+    Block& bl = blocks[static_cast<size_t>(b)];
+    std::copy(bl.col.begin(), bl.col.end(), A.innerIndexPtr() + at[static_cast<size_t>(b)]);
+    std::copy(bl.val.begin(), bl.val.end(), A.valuePtr() + at[static_cast<size_t>(b)]);
     std::vector<int>().swap(bl.col);
     std::vector<double>().swap(bl.val);
   }
