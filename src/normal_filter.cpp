@@ -154,10 +154,9 @@ class NormalFilterRun {
                   const Eigen::MatrixXd& normals0);
   NormalFilterResult run(const ProgressCallback& progress);
   /// The faces' order in the N-step's solver (reverse Cuthill–McKee under CG; empty: the input's).
-  const std::vector<int>& face_order() const { return order_; }
 
  private:
-  void assemble_n_step();
+  void assemble_n_step(const PreparedMesh& mesh);
   void n_step_rhs();
   void n_step(Rows& N_out, const Rows& fallback);
   double normal_change() const;
@@ -221,7 +220,7 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
   // them a tiny positive weight instead (their normals then follow their neighbours).
   const double area_floor = 1e-12 * std::max(1e-300, ops_.face_areas.mean());
   fid_weight_ = (2.0 * o.alpha) * ops_.face_areas.cwiseMax(area_floor).cwiseProduct(face_alpha_).cwiseMax(area_floor);
-  assemble_n_step();
+  assemble_n_step(mesh);
   N0r_ = detail::to_rows(N0_);
   if (!o.record_energy) N0_ = Eigen::MatrixXd();  // only the energy reads the column-major copy
   renumber();
@@ -274,7 +273,7 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
 
 // N-step matrix (eq. 20 in matrix form, DESIGN.md step 1): 2αS + r Gᵀ L G; constant. Also the
 // Gᵀ L weights of its right-hand side.
-void NormalFilterRun::assemble_n_step() {
+void NormalFilterRun::assemble_n_step(const PreparedMesh& mesh) {
   // Auto: the factorisation below kCgMinFaces faces (cheap there, and exact), conjugate
   // gradients above (linear cost, where the factor grows like n^1.5), unless per-face α
   // weights switch the fidelity off somewhere (inpainting): the matrix then loses its
@@ -303,7 +302,8 @@ void NormalFilterRun::assemble_n_step() {
   const auto diagonal = [&](Eigen::Index f) { return fid_weight_(f); };
   const auto weight = [&](int e) { return o_.penalty * ops_.edge_lengths(e); };
   if (use_cg)
-    n_system_.emplace(nf_, detail::face_graph_rows(topo_, diagonal, weight), method, "normal filtering (N-step)");
+    n_system_.emplace(nf_, detail::face_graph_rows(topo_, diagonal, weight), mesh.face_order(), method,
+                      "normal filtering (N-step)");
   else
     n_system_.emplace(detail::face_graph_matrix(topo_, nf_, diagonal, weight), method, "normal filtering (N-step)");
 
@@ -610,14 +610,11 @@ NormalFilterResult filter_normals(const PreparedMesh& mesh, const NormalFilterOp
   o.validate();
   if (mesh.num_faces() == 0) throw InvalidInput("normal filtering: the mesh has no faces");
   NormalFilterResult r;
-  std::vector<int> order;  // the N-step's face order, which the polish reuses (when CG's: not empty)
   {
     NormalFilterRun run(mesh, o, weights, normals0);  // its arrays are freed before the polish
     r = run.run(progress);
-    if (o.polish > 0) order = run.face_order();
   }
-  if (o.polish > 0)
-    r.normals = detail::polish_normals(mesh, r.normals, r.v, o.polish, o.polish_range, std::move(order));
+  if (o.polish > 0) r.normals = detail::polish_normals(mesh, r.normals, r.v, o.polish, o.polish_range);
   return r;
 }
 

@@ -12,7 +12,7 @@
 namespace msmesh::detail {
 
 Eigen::MatrixXd polish_normals(const PreparedMesh& mesh, const Eigen::MatrixXd& N, const Eigen::VectorXd& v,
-                               double weight, double range, std::vector<int> face_order) {
+                               double weight, double range) {
   const Topology& topo = mesh.topology();
   const Eigen::MatrixXd& P = mesh.positions();
   const Eigen::Index nf = mesh.num_faces(), ne = topo.num_edges();
@@ -31,10 +31,10 @@ Eigen::MatrixXd polish_normals(const PreparedMesh& mesh, const Eigen::MatrixXd& 
   const auto edge_weight = [&](int e) { return w(e); };
   // Chebyshev iteration on Gershgorin's interval from N, to a tight residual (a few dozen
   // sweeps: the result is the same to round-off whatever the mesh's orientation), in the
-  // faces' reverse Cuthill–McKee order (the caller's when it has one: the same face graph).
+  // faces' reverse Cuthill–McKee order (the mesh's, which the N-step's CG also works in).
   // One pass per sweep where CG made three, for a few sweeps more: the 82K sphere 42 CG sweeps
   // against 50, the 1.3M one's polish 36 % fewer CPU samples (docs/performance.md).
-  BlockPcg pcg(nf, face_graph_rows(topo, one, edge_weight), std::move(face_order));
+  BlockPcg pcg(nf, face_graph_rows(topo, one, edge_weight), mesh.face_order());
   pcg.use_chebyshev(/*gershgorin_lower=*/true);
   const RowMatrixX3 B = N;
   RowMatrixX3 X = N;

@@ -8,17 +8,14 @@
 // "The polish").
 #pragma once
 #include <Eigen/Core>
-#include <vector>
 
 #include "msmesh/prepared_mesh.h"
 
 namespace msmesh::detail {
 
 /// N: #F by 3 unit normals; v: #E edge field on mesh.topology() (clipped to [0, 1] here);
-/// weight λ > 0, range σ > 0. `face_order`: the faces' reverse Cuthill–McKee order when the
-/// caller has it (the N-step's; position i holds face face_order[i]), else empty and computed
-/// here. Returns the polished unit normals.
+/// weight λ > 0, range σ > 0. Solved in mesh.face_order(). Returns the polished unit normals.
 Eigen::MatrixXd polish_normals(const PreparedMesh& mesh, const Eigen::MatrixXd& N, const Eigen::VectorXd& v,
-                               double weight, double range, std::vector<int> face_order = {});
+                               double weight, double range);
 
 }  // namespace msmesh::detail

@@ -58,16 +58,22 @@ class ConstantSystem {
     }
   }
   /// The same for CG (Method Cg or CgSingle) on the n by n matrix of fixed-width `rows`
-  /// (pcg.h), never assembled; in the rows' reverse Cuthill–McKee order.
-  ConstantSystem(Eigen::Index n, const FixedWidthRows& rows, Method method, std::string what) : what_(std::move(what)) {
+  /// (pcg.h), never assembled; in `order` (empty: the rows' reverse Cuthill–McKee order).
+  ConstantSystem(Eigen::Index n, const FixedWidthRows& rows, std::vector<int> order, Method method, std::string what)
+      : what_(std::move(what)) {
     if (method == Method::Cg) {
-      pcg_ = std::make_unique<BlockPcg>(n, rows, std::vector<int>());
+      pcg_ = std::make_unique<BlockPcg>(n, rows, std::move(order));
     } else if (method == Method::CgSingle) {
-      pcg_single_ = std::make_unique<SingleBlockPcg>(n, rows, std::vector<int>());
+      pcg_single_ = std::make_unique<SingleBlockPcg>(n, rows, std::move(order));
       pcg_single_->use_chebyshev();
     } else {
       throw SolverError(what_ + ": a factorisation needs the assembled matrix");
     }
+  }
+  /// The same for CG in double precision on a matrix A already in the order to work in (no
+  /// reordering): A's arrays are taken over when its columns are sorted within each row.
+  ConstantSystem(SparseMatrix&& A, std::string what) : what_(std::move(what)) {
+    pcg_ = std::make_unique<BlockPcg>(std::move(A), /*reorder=*/false);
   }
   /// Solves A X = B; X holds the warm start for CG. Returns the CG sweeps, or −1 when the
   /// system was factored. Throws SolverError naming the system.

@@ -6,7 +6,9 @@
 // shares it instead of repeating it per stage. Immutable after construction.
 #pragma once
 #include <Eigen/Core>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "msmesh/topology.h"
 
@@ -36,6 +38,11 @@ class PreparedMesh {
   /// Maps normalised positions (#V by 3) back to the input's units and position.
   Eigen::MatrixXd to_input_units(const Eigen::MatrixXd& positions) const;
 
+  /// The faces in reverse Cuthill–McKee order of their adjacency across interior edges
+  /// (position i holds face face_order()[i]): the order the iterative solvers of the normal
+  /// filter, the polish and the vertex update work in, so that neighbours are close in memory.
+  /// Computed on first use (thread-safe; copies of this object share it).
+  const std::vector<int>& face_order() const;
   Eigen::Index num_vertices() const { return positions_.rows(); }
   Eigen::Index num_faces() const { return faces_.rows(); }
   Eigen::Index num_edges() const { return topology_.num_edges(); }
@@ -46,6 +53,8 @@ class PreparedMesh {
   Topology topology_;
   Eigen::RowVector3d center_ = Eigen::RowVector3d::Zero();
   double scale_ = 1.0;
+  struct Orders;
+  std::shared_ptr<Orders> orders_;  // face_order(), computed on first use
 };
 
 }  // namespace msmesh
