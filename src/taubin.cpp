@@ -6,6 +6,7 @@
 
 #include "msmesh/errors.h"
 #include "msmesh/mesh.h"
+#include "parallel.h"
 
 namespace msmesh {
 
@@ -34,12 +35,15 @@ Eigen::MatrixXd taubin_smooth(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F
       nbr[static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++)] = a;
     }
   std::vector<int> count(static_cast<std::size_t>(nv));
-  for (Eigen::Index i = 0; i < nv; ++i) {
-    int* first = nbr.data() + start[static_cast<std::size_t>(i)];
-    int* last = nbr.data() + start[static_cast<std::size_t>(i) + 1];
-    std::sort(first, last);
-    count[static_cast<std::size_t>(i)] = static_cast<int>(std::unique(first, last) - first);  // an edge counts once
-  }
+  detail::parallel_for(
+      nv,
+      [&](Eigen::Index i) {
+        int* first = nbr.data() + start[static_cast<std::size_t>(i)];
+        int* last = nbr.data() + start[static_cast<std::size_t>(i) + 1];
+        std::sort(first, last);
+        count[static_cast<std::size_t>(i)] = static_cast<int>(std::unique(first, last) - first);  // an edge counts once
+      },
+      4);
   // Rows without neighbours (unreferenced vertices) do not move: W V = 0 would pull them to the
   // origin. Each step is X ← X + step (W X − X), coordinate by coordinate, in rows.
   using Rows = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <unordered_map>
 
 #include "msmesh/errors.h"
+#include "parallel.h"
 #include "union_find.h"
 
 namespace msmesh {
@@ -33,7 +35,13 @@ Topology build_topology(const Eigen::MatrixXi& F, Eigen::Index num_vertices) {
   for (Eigen::Index f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) ++start[static_cast<size_t>(std::min(F(f, (k + 1) % 3), F(f, (k + 2) % 3))) + 1];
   for (size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
-  std::vector<HalfEdge> he(static_cast<size_t>(3 * nf));
+  // Not value-initialised: its pages are first touched in parallel, then filled (a million
+  // faces: 63 MB, whose first touch on one thread cost as much as the rest of the sort).
+  const size_t nh = static_cast<size_t>(3 * nf);
+  std::unique_ptr<HalfEdge[]> he_storage(new HalfEdge[nh]);
+  HalfEdge* const he = he_storage.get();
+  detail::parallel_for_blocks(static_cast<Eigen::Index>(nh),
+                              [&](Eigen::Index i0, Eigen::Index i1) { std::fill(he + i0, he + i1, HalfEdge{}); });
   {
     std::vector<int> fill(start.begin(), start.end() - 1);
     for (Eigen::Index f = 0; f < nf; ++f) {
@@ -49,21 +57,34 @@ Topology build_topology(const Eigen::MatrixXi& F, Eigen::Index num_vertices) {
     if (x.face != y.face) return x.face < y.face;
     return x.corner < y.corner;
   };
-  for (size_t v = 0; v + 1 < start.size(); ++v) {
-    const auto b = he.begin() + start[v], e = he.begin() + start[v + 1];
-    // Nothing to sort; also keeps `b + 1` inside the array (UBSan: offset applied to the null
-    // data pointer of an empty array when F has no faces).
-    if (e - b < 2) continue;
-    if (e - b < 32) {  // insertion sort: buckets hold a vertex's few edges
-      for (auto i = b + 1; i < e; ++i)
-        for (auto j = i; j > b && less(*j, *(j - 1)); --j) std::iter_swap(j, j - 1);
-    } else {
-      std::sort(b, e, less);
-    }
-  }
-  Eigen::Index ne = 0;
-  for (size_t i = 0; i < he.size(); ++i)
-    if (i == 0 || he[i].lo != he[i - 1].lo || he[i].hi != he[i - 1].hi) ++ne;
+  // Each vertex's bucket on its own (in parallel): sorted, its edges counted; then numbered
+  // from the counts before it, so the numbering is the serial one.
+  const Eigen::Index nb = max_vertex;
+  std::vector<int> bucket_edges(static_cast<size_t>(nb) + 1, 0);
+  detail::parallel_for(
+      nb,
+      [&](Eigen::Index v) {
+        HalfEdge* const b = he + start[static_cast<size_t>(v)];
+        HalfEdge* const e = he + start[static_cast<size_t>(v) + 1];
+        // Nothing to sort; also keeps `b + 1` inside the array (UBSan: offset applied to the
+        // null data pointer of an empty array when F has no faces).
+        if (e - b < 2) {
+          bucket_edges[static_cast<size_t>(v) + 1] = static_cast<int>(e - b);
+          return;
+        }
+        if (e - b < 32) {  // insertion sort: buckets hold a vertex's few edges
+          for (auto i = b + 1; i < e; ++i)
+            for (auto j = i; j > b && less(*j, *(j - 1)); --j) std::iter_swap(j, j - 1);
+        } else {
+          std::sort(b, e, less);
+        }
+        int distinct = 1;
+        for (auto i = b + 1; i < e; ++i) distinct += i->hi != (i - 1)->hi;
+        bucket_edges[static_cast<size_t>(v) + 1] = distinct;
+      },
+      4);
+  for (size_t v = 0; v < static_cast<size_t>(nb); ++v) bucket_edges[v + 1] += bucket_edges[v];
+  const Eigen::Index ne = bucket_edges.back();
 
   t.edges.resize(ne, 2);
   t.edge_faces.setConstant(ne, 2, -1);
@@ -72,23 +93,32 @@ Topology build_topology(const Eigen::MatrixXi& F, Eigen::Index num_vertices) {
   t.face_edges.resize(nf, 3);
   t.face_edge_signs.resize(nf, 3);
 
-  Eigen::Index e = -1;
-  for (size_t i = 0; i < he.size(); ++i) {
-    if (i == 0 || he[i].lo != he[i - 1].lo || he[i].hi != he[i - 1].hi) {
-      ++e;
-      t.edges(e, 0) = he[i].lo;
-      t.edges(e, 1) = he[i].hi;
-    }
-    const int f = he[i].face, k = he[i].corner;
-    const int from = F(f, (k + 1) % 3);
-    const int sign = (from == he[i].lo) ? 1 : -1;
-    t.face_edges(f, k) = static_cast<int>(e);
-    t.face_edge_signs(f, k) = sign;
-    const int c = t.edge_face_count(e)++;
-    if (c < 2) t.edge_faces(e, c) = f;
-  }
-  for (Eigen::Index ei = 0; ei < ne; ++ei) {
-    if (t.edge_face_count(ei) != 2) continue;
+  // A bucket holds every half-edge of its edges (they share the lower vertex).
+  detail::parallel_for(
+      nb,
+      [&](Eigen::Index v) {
+        Eigen::Index e = bucket_edges[static_cast<size_t>(v)] - 1;
+        for (int i = start[static_cast<size_t>(v)]; i < start[static_cast<size_t>(v) + 1]; ++i) {
+          const HalfEdge& h = he[static_cast<size_t>(i)];
+          if (i == start[static_cast<size_t>(v)] || h.hi != he[static_cast<size_t>(i) - 1].hi) {
+            ++e;
+            t.edges(e, 0) = h.lo;
+            t.edges(e, 1) = h.hi;
+          }
+          const int f = h.face, k = h.corner;
+          const int from = F(f, (k + 1) % 3);
+          const int sign = (from == h.lo) ? 1 : -1;
+          t.face_edges(f, k) = static_cast<int>(e);
+          t.face_edge_signs(f, k) = sign;
+          const int c = t.edge_face_count(e)++;
+          if (c < 2) t.edge_faces(e, c) = f;
+        }
+      },
+      4);
+  // (std::vector<bool> packs its bits: set from the bytes after the parallel loop.)
+  std::vector<char> interior(static_cast<size_t>(ne), 0);
+  detail::parallel_for(ne, [&](Eigen::Index ei) {
+    if (t.edge_face_count(ei) != 2) return;
     const int f0 = t.edge_faces(ei, 0), f1 = t.edge_faces(ei, 1);
     auto sign_in = [&](int f) {
       for (int k = 0; k < 3; ++k)
@@ -97,10 +127,12 @@ Topology build_topology(const Eigen::MatrixXi& F, Eigen::Index num_vertices) {
     };
     const int s0 = sign_in(f0), s1 = sign_in(f1);
     if (s0 != s1) {
-      t.edge_is_interior[ei] = true;
+      interior[static_cast<size_t>(ei)] = 1;
       if (s0 < 0) std::swap(t.edge_faces(ei, 0), t.edge_faces(ei, 1));
     }
-  }
+  });
+  for (Eigen::Index ei = 0; ei < ne; ++ei)
+    t.edge_is_interior[static_cast<size_t>(ei)] = interior[static_cast<size_t>(ei)];
   return t;
 }
 
