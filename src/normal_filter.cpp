@@ -230,10 +230,10 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
   // line l couples its entering and leaving edges), stored with explicit diagonal entries.
   {
     Eigen::VectorXd lines(3 * nf_);
-    for (Eigen::Index i = 0; i < nf_; ++i) {
+    detail::parallel_for(nf_, [&](Eigen::Index i) {
       const Eigen::Index f = order_.empty() ? i : order_[static_cast<size_t>(i)];
       for (int k = 0; k < 3; ++k) lines(3 * i + k) = ops_.line_lengths(3 * f + k);
-    }
+    });
     SparseMatrix Kv = edge_smoothness_matrix(ne_, face_edges_, lines, 2.0 * o.beta * o.epsilon);
     smooth_diag_.resize(ne_);
     detail::parallel_for(ne_, [&](Eigen::Index e) { smooth_diag_(e) = Kv.coeff(e, e); });

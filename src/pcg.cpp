@@ -156,12 +156,16 @@ BasicBlockPcg<Stored>::BasicBlockPcg(Eigen::Index n, const FixedWidthRows& rows,
 template <class Stored>
 BasicBlockPcg<Stored>::BasicBlockPcg(Eigen::SparseMatrix<double>&& A, bool reorder) {
   bool sorted = std::is_same_v<Stored, double> && !reorder && A.isCompressed();
-  for (Eigen::Index i = 0; sorted && i < A.outerSize(); ++i)
-    for (int j = A.outerIndexPtr()[i] + 1; j < A.outerIndexPtr()[i + 1]; ++j)
-      if (A.innerIndexPtr()[j] <= A.innerIndexPtr()[j - 1]) {
-        sorted = false;
-        break;
-      }
+  if (sorted) {  // every row's columns increasing (in parallel blocks: ten million entries at 1.3M faces)
+    const Eigen::Index n = A.outerSize();
+    std::vector<char> unsorted(static_cast<size_t>((n + kBlock - 1) / kBlock), 0);
+    parallel_for_blocks(n, [&](Eigen::Index i0, Eigen::Index i1) {
+      for (Eigen::Index i = i0; i < i1; ++i)
+        for (int j = A.outerIndexPtr()[i] + 1; j < A.outerIndexPtr()[i + 1]; ++j)
+          if (A.innerIndexPtr()[j] <= A.innerIndexPtr()[j - 1]) unsorted[static_cast<size_t>(i0 / kBlock)] = 1;
+    });
+    sorted = std::find(unsorted.begin(), unsorted.end(), 1) == unsorted.end();
+  }
   if (!sorted) {
     init(A, reorder);
     return;
