@@ -273,12 +273,8 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
   auto input_vertex = [&](Eigen::Index i) {
     return order.empty() ? i : static_cast<Eigen::Index>(order[static_cast<size_t>(i)]);
   };
-  Rows X(nv, 3);  // the iterate, from the input positions
   Eigen::VectorXd d3(nv);
-  detail::parallel_for(nv, [&](Eigen::Index i) {
-    X.row(i) = mesh.positions().row(input_vertex(i));
-    d3(i) = o.omega3 * w3(input_vertex(i));
-  });
+  detail::parallel_for(nv, [&](Eigen::Index i) { d3(i) = o.omega3 * w3(input_vertex(i)); });
 
   // Assembly of eq. 27: (ω₁KᵀK + ω₂HᵀH + ω₃I) V = ω₁KᵀP + ω₃V⁰.
   const VertexCorners vc = vertex_corners(Fw, nv);
@@ -291,6 +287,8 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
       use_cg ? detail::ConstantSystem(std::move(A_v), "vertex update")
              : detail::ConstantSystem(A_v, detail::ConstantSystem::Method::Cholesky, "vertex update");
   A_v = SparseMatrix();
+  Rows X(nv, 3);  // the iterate, from the input positions (allocated after the assembly's scratch is freed)
+  detail::parallel_for(nv, [&](Eigen::Index i) { X.row(i) = mesh.positions().row(input_vertex(i)); });
   const Rows rhs0 = d3.asDiagonal() * X;
 
   // X is the iterate x_k, G = G(x_k) the positions one P-step and V-step make of it; the plain
