@@ -15,12 +15,13 @@ constexpr Eigen::Index kBlock = 2048;
 constexpr Eigen::Index kParallelMin = 16 * kBlock;
 
 /// Runs body(begin, end, sums) over fixed blocks of [0, n) and returns the K sums, added in
-/// block order. body adds its block's contributions to sums (zero-initialised).
+/// block order. body adds its block's contributions to sums (zero-initialised). `row_weight`
+/// as for parallel_for below.
 template <int K, class Body>
-std::array<double, K> deterministic_sums(Eigen::Index n, Body&& body) {
+std::array<double, K> deterministic_sums(Eigen::Index n, Body&& body, Eigen::Index row_weight = 1) {
   const Eigen::Index nb = (n + kBlock - 1) / kBlock;
   std::vector<std::array<double, K>> partial(static_cast<size_t>(nb));
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+#pragma omp parallel for schedule(static) if (n * row_weight >= kParallelMin)
   for (Eigen::Index b = 0; b < nb; ++b) {
     std::array<double, K> s{};
     body(b * kBlock, std::min(n, (b + 1) * kBlock), s);

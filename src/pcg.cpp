@@ -19,13 +19,16 @@ namespace {
 
 // Sums of C columns, K of them at once, in a fixed order (parallel.h).
 template <int C, int K, class Body>
-std::array<std::array<double, C>, K> column_sums(Eigen::Index n, Body&& body) {
-  const auto flat = deterministic_sums<C * K>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<double, C * K>& s) {
-    std::array<std::array<double, C>, K> t{};
-    body(i0, i1, t);
-    for (int k = 0; k < K; ++k)
-      for (int c = 0; c < C; ++c) s[C * k + c] += t[k][c];
-  });
+std::array<std::array<double, C>, K> column_sums(Eigen::Index n, Body&& body, Eigen::Index row_weight = 1) {
+  const auto flat = deterministic_sums<C * K>(
+      n,
+      [&](Eigen::Index i0, Eigen::Index i1, std::array<double, C * K>& s) {
+        std::array<std::array<double, C>, K> t{};
+        body(i0, i1, t);
+        for (int k = 0; k < K; ++k)
+          for (int c = 0; c < C; ++c) s[C * k + c] += t[k][c];
+      },
+      row_weight);
   std::array<std::array<double, C>, K> out{};
   for (int k = 0; k < K; ++k)
     for (int c = 0; c < C; ++c) out[k][c] = flat[C * k + c];
@@ -453,21 +456,24 @@ PcgStats BasicBlockPcg<Stored>::solve_layout(const double* B, double* X, double 
   Stored* Qp = Q_.data();
 
   // r = b − A x, p = D⁻¹ r; sums: ‖b‖², r·D⁻¹r, ‖r‖² (of the stored r and p).
-  const auto s0 = column_sums<K, 3>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 3>& s) {
-    for (Eigen::Index i = i0; i < i1; ++i) {
-      double ax[K];
-      row_product<K, Ell>(i, X, ax);
-      for (int c = 0; c < K; ++c) {
-        const double b = B[K * i + c];
-        const Stored r = static_cast<Stored>(b - ax[c]), z = static_cast<Stored>(double(r) * double(inv_d[i]));
-        Rp[K * i + c] = r;
-        Pw[K * i + c] = z;
-        s[0][c] += b * b;
-        s[1][c] += double(r) * double(z);
-        s[2][c] += double(r) * double(r);
-      }
-    }
-  });
+  const auto s0 = column_sums<K, 3>(
+      n,
+      [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 3>& s) {
+        for (Eigen::Index i = i0; i < i1; ++i) {
+          double ax[K];
+          row_product<K, Ell>(i, X, ax);
+          for (int c = 0; c < K; ++c) {
+            const double b = B[K * i + c];
+            const Stored r = static_cast<Stored>(b - ax[c]), z = static_cast<Stored>(double(r) * double(inv_d[i]));
+            Rp[K * i + c] = r;
+            Pw[K * i + c] = z;
+            s[0][c] += b * b;
+            s[1][c] += double(r) * double(z);
+            s[2][c] += double(r) * double(r);
+          }
+        }
+      },
+      product_weight<Ell>());
   Sums tol{}, rz = s0[1];
   std::array<bool, K> done{};
   PcgStats stats;
@@ -499,21 +505,24 @@ PcgStats BasicBlockPcg<Stored>::solve_layout(const double* B, double* X, double 
       throw SolverError(os.str());
     }
     // q = A p, p·q.
-    const auto s1 = column_sums<K, 1>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 1>& s) {
-      const Stored* __restrict p = Pw;
-      Stored* __restrict q = Qp;
-      Sums pq{};
-      for (Eigen::Index i = i0; i < i1; ++i) {
-        double a[K];
-        row_product<K, Ell>(i, p, a);
-        for (int c = 0; c < K; ++c) {
-          const Stored qc = static_cast<Stored>(a[c]);
-          q[K * i + c] = qc;
-          pq[c] += double(p[K * i + c]) * double(qc);
-        }
-      }
-      s[0] = pq;
-    });
+    const auto s1 = column_sums<K, 1>(
+        n,
+        [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 1>& s) {
+          const Stored* __restrict p = Pw;
+          Stored* __restrict q = Qp;
+          Sums pq{};
+          for (Eigen::Index i = i0; i < i1; ++i) {
+            double a[K];
+            row_product<K, Ell>(i, p, a);
+            for (int c = 0; c < K; ++c) {
+              const Stored qc = static_cast<Stored>(a[c]);
+              q[K * i + c] = qc;
+              pq[c] += double(p[K * i + c]) * double(qc);
+            }
+          }
+          s[0] = pq;
+        },
+        product_weight<Ell>());
     Sums alpha{};
     for (int c = 0; c < K; ++c) alpha[c] = done[c] ? 0.0 : rz[c] / s1[0][c];
     // r −= α q; sums: r·D⁻¹r, ‖r‖². (x += α p waits for the pass that overwrites p, which
@@ -716,20 +725,23 @@ PcgStats BasicBlockPcg<Stored>::solve_chebyshev(const double* B, double* X, doub
   const double sigma1 = theta / delta;
 
   // r₀ = b − A x₀, y₁ = D⁻¹ r₀ / θ; sums ‖b‖², ‖r₀‖².
-  const auto s0 = column_sums<K, 2>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 2>& s) {
-    for (Eigen::Index i = i0; i < i1; ++i) {
-      double ax[K];
-      row_product<K, Ell>(i, X, ax);
-      for (int c = 0; c < K; ++c) {
-        const double b = B[K * i + c];
-        const Stored r = static_cast<Stored>(b - ax[c]);
-        R0[K * i + c] = r;
-        Y0[K * i + c] = static_cast<Stored>(double(r) * double(inv_d[i]) / theta);
-        s[0][c] += b * b;
-        s[1][c] += double(r) * double(r);
-      }
-    }
-  });
+  const auto s0 = column_sums<K, 2>(
+      n,
+      [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 2>& s) {
+        for (Eigen::Index i = i0; i < i1; ++i) {
+          double ax[K];
+          row_product<K, Ell>(i, X, ax);
+          for (int c = 0; c < K; ++c) {
+            const double b = B[K * i + c];
+            const Stored r = static_cast<Stored>(b - ax[c]);
+            R0[K * i + c] = r;
+            Y0[K * i + c] = static_cast<Stored>(double(r) * double(inv_d[i]) / theta);
+            s[0][c] += b * b;
+            s[1][c] += double(r) * double(r);
+          }
+        }
+      },
+      product_weight<Ell>());
   Sums tol{};
   PcgStats stats;
   auto converged = [&](const Sums& rr) {
@@ -783,25 +795,28 @@ PcgStats BasicBlockPcg<Stored>::solve_chebyshev(const double* B, double* X, doub
     rho = rho_next;
     // r = r₀ − A y_k, y_{k+1} = y_k + c₁ (y_k − y_{k−1}) + c₂ D⁻¹ r (y₀ = 0); sum ‖r‖².
     auto sweep = [&](auto first) {
-      return column_sums<K, 1>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 1>& s) {
-        const Stored* __restrict y = Y0;
-        Stored* __restrict y_old = Y1;
-        const Stored* __restrict r0 = R0;
-        Sums rr{};
-        for (Eigen::Index i = i0; i < i1; ++i) {
-          double a[K];
-          row_product<K, Ell>(i, y, a);
-          const double di = inv_d[i];
-          for (int c = 0; c < K; ++c) {
-            const Eigen::Index e = K * i + c;
-            const double rc = double(r0[e]) - a[c], yc = y[e];
-            const double previous = decltype(first)::value ? 0.0 : double(y_old[e]);
-            y_old[e] = static_cast<Stored>(yc + c1 * (yc - previous) + c2 * di * rc);
-            rr[c] += rc * rc;
-          }
-        }
-        s[0] = rr;
-      });
+      return column_sums<K, 1>(
+          n,
+          [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 1>& s) {
+            const Stored* __restrict y = Y0;
+            Stored* __restrict y_old = Y1;
+            const Stored* __restrict r0 = R0;
+            Sums rr{};
+            for (Eigen::Index i = i0; i < i1; ++i) {
+              double a[K];
+              row_product<K, Ell>(i, y, a);
+              const double di = inv_d[i];
+              for (int c = 0; c < K; ++c) {
+                const Eigen::Index e = K * i + c;
+                const double rc = double(r0[e]) - a[c], yc = y[e];
+                const double previous = decltype(first)::value ? 0.0 : double(y_old[e]);
+                y_old[e] = static_cast<Stored>(yc + c1 * (yc - previous) + c2 * di * rc);
+                rr[c] += rc * rc;
+              }
+            }
+            s[0] = rr;
+          },
+          product_weight<Ell>());
     };
     const auto s1 = it == 1 ? sweep(std::true_type{}) : sweep(std::false_type{});
     if (converged(s1[0])) break;  // at y_k, which the sweep only read

@@ -116,6 +116,13 @@ class BasicBlockPcg {
                            const std::string& what) const;
   template <int K, bool Ell, class T>
   void row_product(Eigen::Index i, const T* __restrict v, double* a) const;
+  // A product pass's rows as simple rows for the parallel threshold (parallel.h): compressed
+  // rows of many entries (the vertex update's ~19) are worth several.
+  template <bool Ell>
+  Eigen::Index product_weight() const {
+    if constexpr (Ell) return 1;
+    return std::max<Eigen::Index>(1, A_.nonZeros() / std::max<Eigen::Index>(1, 4 * A_.rows()));
+  }
   void learn_spectrum(const std::vector<double>& alpha, const std::vector<double>& beta) const;
   void set_spectrum(double radius);
   void check_diagonal() const;
