@@ -88,8 +88,10 @@ BasicBlockPcg<Stored>::BasicBlockPcg(Eigen::Index n, const FixedWidthRows& rows,
   std::vector<char> too_wide(static_cast<size_t>((n + kBlock - 1) / kBlock), 0);
   parallel_for_blocks(n, [&](Eigen::Index i0, Eigen::Index i1) {
     for (Eigen::Index i = i0; i < i1; ++i) {
-      int* c = cols.data() + W * i;
-      double* v = vals.data() + W * i;
+      // Written into room for more than W entries, so that a row of too many is refused
+      // without writing over the next row's.
+      int c[kFixedWidthRoom];
+      double v[kFixedWidthRoom];
       const int m = rows(i, &diag[static_cast<size_t>(i)], c, v);
       if (m > W) {
         too_wide[static_cast<size_t>(i0 / kBlock)] = 1;
@@ -105,6 +107,8 @@ BasicBlockPcg<Stored>::BasicBlockPcg(Eigen::Index n, const FixedWidthRows& rows,
           v[u++] = v[a];
         }
       }
+      std::copy(c, c + u, cols.data() + W * i);
+      std::copy(v, v + u, vals.data() + W * i);
       count[static_cast<size_t>(i)] = u;
     }
   });

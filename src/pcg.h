@@ -38,8 +38,11 @@ using RowMatrixX3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 /// A symmetric matrix with at most three entries beside the diagonal in each row (a face
 /// graph's), given row by row instead of assembled: row(i, diag, cols, vals) writes row i's
 /// diagonal entry into *diag and its other entries (column numbers, any order; a repeated
-/// column is summed) into cols and vals, and returns their number, at most three.
+/// column is summed) into cols and vals, and returns their number: at most three (a row of
+/// more is refused; cols and vals have room for kFixedWidthRoom). Called for several rows at
+/// once from the library's threads.
 using FixedWidthRows = std::function<int(Eigen::Index row, double* diag, int* cols, double* vals)>;
+constexpr int kFixedWidthRoom = 8;
 
 struct PcgStats {
   int iterations = 0;              ///< sweeps of the slowest column

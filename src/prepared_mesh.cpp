@@ -1,5 +1,6 @@
 #include "msmesh/prepared_mesh.h"
 
+#include <algorithm>
 #include <mutex>
 
 #include "cuthill_mckee.h"

@@ -279,8 +279,8 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
   // Assembly of eq. 27: (ω₁KᵀK + ω₂HᵀH + ω₃I) V = ω₁KᵀP + ω₃V⁰.
   const VertexCorners vc = vertex_corners(Fw, nv);
   EdgeQuads eq = o.omega2 > 0 ? edge_quads(Fw, topo, renumber, v, nv) : EdgeQuads{};
-  // The edge quads and the matrix are freed before the iterations' arrays are allocated (CG
-  // takes the matrix's arrays over): ~80 MB less at a million faces.
+  // The edge quads (~80 MB at a million faces), and the matrix when it is factored, are freed
+  // before the iterations' arrays are allocated; CG takes the matrix's arrays over.
   SparseMatrix A_v = v_step_matrix(Fw, vc, eq, d3, o);
   eq = EdgeQuads();
   const detail::ConstantSystem v_step =

@@ -164,13 +164,17 @@ TEST(InternalPcg, FixedWidthRowsGiveTheAssembledMatrixsSolverBitForBit) {
   // Four entries beside the diagonal, a wrong order's length, a diagonal that is not positive.
   const detail::FixedWidthRows wide = [](Eigen::Index i, double* diag, int* cols, double* vals) {
     *diag = 5;
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < 4; ++k) {  // (the last row too: written into the room beyond three)
       cols[k] = static_cast<int>((i + k + 1) % 10);
       vals[k] = -1;
     }
     return 4;
   };
   EXPECT_THROW(detail::BlockPcg(10, wide, {}), SolverError);
+  const detail::FixedWidthRows last_wide = [&](Eigen::Index i, double* diag, int* cols, double* vals) {
+    return i + 1 == n ? wide(i, diag, cols, vals) : rows(i, diag, cols, vals);
+  };
+  EXPECT_THROW(detail::BlockPcg(n, last_wide, {}), SolverError);
   EXPECT_THROW(detail::BlockPcg(n, rows, std::vector<int>(static_cast<size_t>(n - 1), 0)), SolverError);
   const detail::FixedWidthRows negative = [&](Eigen::Index i, double* diag, int* cols, double* vals) {
     const int m = rows(i, diag, cols, vals);
