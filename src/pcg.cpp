@@ -12,6 +12,7 @@
 #include "cuthill_mckee.h"
 #include "msmesh/errors.h"
 #include "parallel.h"
+#include "sparse_build.h"
 
 namespace msmesh::detail {
 
@@ -51,15 +52,6 @@ std::vector<int> matrix_order(const Eigen::Map<const RowSparse>& A) {
   });
 }
 
-// Sorts m (column, value) pairs by column, stably (a few entries: insertion).
-inline void sort_entries(int* col, double* val, int m) {
-  for (int a = 1; a < m; ++a)
-    for (int k = a; k > 0 && col[k] < col[k - 1]; --k) {
-      std::swap(col[k], col[k - 1]);
-      std::swap(val[k], val[k - 1]);
-    }
-}
-
 }  // namespace
 
 template <class Stored>
@@ -97,19 +89,10 @@ BasicBlockPcg<Stored>::BasicBlockPcg(Eigen::Index n, const FixedWidthRows& rows,
         too_wide[static_cast<size_t>(i0 / kBlock)] = 1;
         return;
       }
-      sort_entries(c, v, m);
-      int u = 0;
-      for (int a = 0; a < m; ++a) {
-        if (u > 0 && c[a] == c[u - 1]) {
-          v[u - 1] += v[a];
-        } else {
-          c[u] = c[a];
-          v[u++] = v[a];
-        }
-      }
+      const size_t u = merge_row(c, v, static_cast<size_t>(m), n);  // (a short row: sorted, then summed)
       std::copy(c, c + u, cols.data() + W * i);
       std::copy(v, v + u, vals.data() + W * i);
-      count[static_cast<size_t>(i)] = u;
+      count[static_cast<size_t>(i)] = static_cast<int>(u);
     }
   });
   if (std::find(too_wide.begin(), too_wide.end(), 1) != too_wide.end())
@@ -143,7 +126,7 @@ BasicBlockPcg<Stored>::BasicBlockPcg(Eigen::Index n, const FixedWidthRows& rows,
         c[k] = inverse[static_cast<size_t>(cols[W * o + k])];
         v[k] = vals[W * o + k];
       }
-      sort_entries(c, v, m);
+      insertion_sort(c, v, static_cast<size_t>(m));
       for (int k = 0; k < W; ++k) {
         ell_cols_[static_cast<size_t>(W * i + k)] = k < m ? c[k] : static_cast<int>(i);
         ell_vals_[static_cast<size_t>(W * i + k)] = k < m ? static_cast<Stored>(v[k]) : Stored(0);
