@@ -23,6 +23,7 @@
 
 #include "msmesh/errors.h"
 #include "read_common.h"
+#include "read_obj_plain.h"
 
 namespace msmesh::io_detail {
 namespace {
@@ -70,6 +71,7 @@ long long resolve_obj_index(long long idx, std::size_t count) {
 
 void read_obj(const std::string& path, std::string_view data, Soup& soup) {
   data = without_utf8_bom(data);
+  if (read_plain_obj(data, soup)) return;  // vertices and triangles only, on every core
   // A quick first pass counts the records by their first letter (lines starting "v", "f",
   // anything else) so that the arrays are allocated once; the parse itself is one pass over
   // the lines, found in place (no array of lines, no string per line or per number).
