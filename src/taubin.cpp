@@ -50,7 +50,7 @@ Eigen::MatrixXd taubin_smooth(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F
   Rows X = V, Xn(nv, 3);
   for (int it = 0; it < o.iterations; ++it)
     for (const double step : {o.lambda, o.mu}) {
-#pragma omp parallel for schedule(static) if (nv >= 65536)
+#pragma omp parallel for schedule(static) if (nv >= 8192)
       for (Eigen::Index i = 0; i < nv; ++i) {
         const int n = count[static_cast<std::size_t>(i)];
         const int* nb = nbr.data() + start[static_cast<std::size_t>(i)];
