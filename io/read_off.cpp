@@ -20,6 +20,7 @@
 
 #include "msmesh/errors.h"
 #include "read_common.h"
+#include "read_off_plain.h"
 
 namespace msmesh::io_detail {
 namespace {
@@ -250,6 +251,8 @@ void read_off(const std::string& path, std::string_view data, Soup& soup) {
   data = without_utf8_bom(data);
   const OffHeader h = parse_off_header(path, data);
   const bool has_extras = h.colors || h.normals || h.homogeneous;
+  // Vertices and triangles only, one per line: on every core, without CGAL.
+  if (!h.binary && !has_extras && read_plain_off(data.substr(h.body_offset), h.vertices, h.faces, soup)) return;
   if (!h.binary) {
     // CGAL reads face records as doubles and converts the vertex count and the indices to
     // size_t unchecked (undefined behaviour for negative, huge or NaN entries; found by

@@ -113,6 +113,7 @@ TEST(InternalReadPlainObj, EverythingElseIsLeftToTheLineByLineReader) {
       {"a word glued to a number", "v 0 0 0#x\nv 1 0 0\nv 1 1 0\nf 1 2 3\n", "cannot read vertex coordinate"},
       {"too few coordinates", "v 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n", "fewer than 3 coordinates"},
       {"an index with a point", v3 + "f 1 2 3.0\n", "an index must be an integer"},
+      {"a NUL byte", v3 + std::string(1, '\0') + "\nf 1 2 3\n", ""},
       {"no faces", v3, "no faces"},
       {"no vertices", "f 1 2 3\n", "no vertices"},
   };
