@@ -8,13 +8,14 @@
 namespace msmesh::io_detail {
 
 std::vector<std::string_view> line_chunks(std::string_view data, std::size_t min_bytes) {
+  // The thread count only when there could be two chunks (see for_each_chunk).
+  const std::size_t most = data.size() / std::max<std::size_t>(min_bytes, 1);
   int threads = 1;
 #ifdef _OPENMP
-  threads = omp_get_max_threads();
+  if (most >= 2) threads = omp_get_max_threads();
 #endif
   const std::size_t n =
-      std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)),
-                                                     data.size() / std::max<std::size_t>(min_bytes, 1)));
+      std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), most));
   // Chunk k starts after the first '\n' at or beyond k / n of the data.
   std::vector<std::string_view> chunks;
   const char* const end = data.data() + data.size();

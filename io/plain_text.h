@@ -41,6 +41,21 @@ struct PlainBounds {
   }
 };
 
+/// Runs body(k) for the n chunks, on every core when there are several. One chunk (a small
+/// file) runs without touching the OpenMP runtime: its start-up may create a shared-memory file
+/// (LLVM's libomp, in the sanitizer build), which a file-size limit turns into an abort
+/// (bench/robustness, class 4) where a reader should only ever fail with an error.
+template <class Body>
+void for_each_chunk(std::size_t n, Body&& body) {
+  if (n == 1) {
+    body(std::size_t(0));
+    return;
+  }
+  const auto count = static_cast<long>(n);
+#pragma omp parallel for schedule(static, 1)
+  for (long k = 0; k < count; ++k) body(static_cast<std::size_t>(k));
+}
+
 /// A cursor over the words of a chunk of lines; no allocation.
 class PlainWords {
  public:

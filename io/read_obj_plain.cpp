@@ -77,10 +77,8 @@ bool read_plain_obj(std::string_view data, Soup& soup) {
     chunks.emplace_back();
     chunks.back().text = text;
   }
-  const auto n = static_cast<long>(chunks.size());
   // Counted first, so that every chunk is read straight into its rows of the mesh.
-#pragma omp parallel for schedule(static, 1) if (n > 1)
-  for (long k = 0; k < n; ++k) count_records(chunks[static_cast<std::size_t>(k)]);
+  for_each_chunk(chunks.size(), [&](std::size_t k) { count_records(chunks[k]); });
   Eigen::Index nv = 0, nf = 0;
   for (Chunk& c : chunks) {
     c.first_vertex = nv;
@@ -92,8 +90,7 @@ bool read_plain_obj(std::string_view data, Soup& soup) {
   Mesh mesh;
   mesh.V.resize(nv, 3);
   mesh.F.resize(nf, 3);
-#pragma omp parallel for schedule(static, 1) if (n > 1)
-  for (long k = 0; k < n; ++k) parse_chunk(chunks[static_cast<std::size_t>(k)], mesh.V, mesh.F);
+  for_each_chunk(chunks.size(), [&](std::size_t k) { parse_chunk(chunks[k], mesh.V, mesh.F); });
   PlainBounds bounds;
   for (const Chunk& c : chunks) {
     if (!c.plain) return false;

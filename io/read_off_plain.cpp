@@ -69,9 +69,7 @@ bool read_plain_off(std::string_view body, long long vertices, long long faces, 
     chunks.emplace_back();
     chunks.back().text = text;
   }
-  const auto n = static_cast<long>(chunks.size());
-#pragma omp parallel for schedule(static, 1) if (n > 1)
-  for (long k = 0; k < n; ++k) count_records(chunks[static_cast<std::size_t>(k)]);
+  for_each_chunk(chunks.size(), [&](std::size_t k) { count_records(chunks[k]); });
   long long records = 0;
   for (Chunk& c : chunks) {
     if (!c.plain) return false;
@@ -82,8 +80,7 @@ bool read_plain_off(std::string_view body, long long vertices, long long faces, 
   Mesh mesh;
   mesh.V.resize(vertices, 3);
   mesh.F.resize(faces, 3);
-#pragma omp parallel for schedule(static, 1) if (n > 1)
-  for (long k = 0; k < n; ++k) parse_chunk(chunks[static_cast<std::size_t>(k)], vertices, faces, mesh.V, mesh.F);
+  for_each_chunk(chunks.size(), [&](std::size_t k) { parse_chunk(chunks[k], vertices, faces, mesh.V, mesh.F); });
   PlainBounds bounds;
   for (const Chunk& c : chunks) {
     if (!c.plain) return false;
