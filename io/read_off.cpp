@@ -1,5 +1,6 @@
-// OFF reader (CGAL's read_OFF behind guards). CGAL resizes its point and polygon arrays to
-// the header counts before reading; in ascii C/N files it reads colour entries without bounds
+// OFF reader: plain ascii files of vertices and triangles on every core (read_off_plain.h),
+// the rest by CGAL's read_OFF behind guards. CGAL resizes its point and polygon arrays to the
+// header counts before reading; in ascii C/N files it reads colour entries without bounds
 // checks (short lines, a line without colour after one with, negative colour-map indices); ST
 // files read texture entries through uninitialised indices (refused); it doubles the edge
 // count in an int.
