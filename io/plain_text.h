@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "read_common.h"
 #include "read_text.h"
 
 namespace msmesh::io_detail {
@@ -40,6 +41,56 @@ struct PlainBounds {
     return true;
   }
 };
+
+/// What every chunk of a plain reader holds: its text, the bounds of the coordinates read from
+/// it, and whether everything in it was plain. Each reader adds its counts.
+struct PlainChunk {
+  std::string_view text;
+  PlainBounds bounds;
+  bool plain = true;
+};
+
+/// The chunks of line_chunks(data) as C (a PlainChunk).
+template <class C>
+std::vector<C> plain_chunks(std::string_view data) {
+  std::vector<C> chunks;
+  for (const std::string_view text : line_chunks(data)) {
+    chunks.emplace_back();
+    chunks.back().text = text;
+  }
+  return chunks;
+}
+
+/// Every chunk plain and the coordinates of all of them within validate_mesh's span.
+template <class C>
+bool all_plain(const std::vector<C>& chunks) {
+  PlainBounds bounds;
+  for (const C& c : chunks) {
+    if (!c.plain) return false;
+    bounds.add(c.bounds);
+  }
+  return bounds.within_span();
+}
+
+/// The mesh as the soup's, read straight into its arrays (soup.direct; nothing dropped).
+inline void take_direct(Mesh&& mesh, Soup& soup) {
+  soup.mesh = std::move(mesh);
+  soup.direct_dropped = 0;
+  soup.direct = true;
+}
+
+/// Calls f(p, end) at each line of `text`, p its first character that is not a space (the
+/// line's '\n', or end, for a blank line).
+template <class F>
+void for_each_line(std::string_view text, F&& f) {
+  const char* const end = text.data() + text.size();
+  for (const char* p = text.data(); p < end;) {
+    while (p < end && *p != '\n' && is_space(*p)) ++p;
+    f(p, end);
+    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+    p = nl ? static_cast<const char*>(nl) + 1 : end;
+  }
+}
 
 /// Runs body(k) for the n chunks, on every core when there are several. One chunk (a small
 /// file) runs without touching the OpenMP runtime: its start-up may create a shared-memory file

@@ -10,29 +10,22 @@
 namespace msmesh::io_detail {
 namespace {
 
-/// One chunk of whole lines: its vertex and face lines (counted first) and their rows in the
-/// mesh, the coordinates' bounds; plain = false at the first thing that is not plain.
-struct Chunk {
-  std::string_view text;
+/// A chunk's vertex and face lines (counted first) and their rows in the mesh.
+struct Chunk : PlainChunk {
   Eigen::Index vertices = 0, faces = 0;
   Eigen::Index first_vertex = 0, first_face = 0;
-  PlainBounds bounds;
-  bool plain = true;
 };
 
-/// The lines of c whose first word is "v" or "f" (a letter, then a space); no other line of a
-/// plain file has either.
+/// The lines of c whose first word is "v" or "f"; any line that is neither, blank nor a
+/// comment ("vt", "vn", "g", "usemtl", ...) makes the file not plain before anything is parsed.
 void count_records(Chunk& c) {
-  const char* const end = c.text.data() + c.text.size();
-  for (const char* p = c.text.data(); p < end;) {
-    while (p < end && *p != '\n' && is_space(*p)) ++p;
-    if (end - p >= 2 && is_space(p[1])) {
-      c.vertices += p[0] == 'v';
-      c.faces += p[0] == 'f';
-    }
-    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
-    p = nl ? static_cast<const char*>(nl) + 1 : end;
-  }
+  for_each_line(c.text, [&](const char* p, const char* end) {
+    if (p == end || *p == '\n' || *p == '#') return;
+    const bool record = end - p >= 2 && is_space(p[1]) && (p[0] == 'v' || p[0] == 'f');
+    c.plain = c.plain && record;
+    c.vertices += record && p[0] == 'v';
+    c.faces += record && p[0] == 'f';
+  });
 }
 
 /// Parses chunk c into its rows of V and F; stops at the first line that is not plain.
@@ -66,21 +59,18 @@ void parse_chunk(Chunk& c, Eigen::MatrixXd& V, Eigen::MatrixXi& F) {
       break;
     }
   }
-  c.plain = w.done() && v == v_end && f == f_end;
+  c.plain = c.plain && w.done() && v == v_end && f == f_end;
 }
 
 }  // namespace
 
 bool read_plain_obj(std::string_view data, Soup& soup) {
-  std::vector<Chunk> chunks;
-  for (const std::string_view text : line_chunks(data)) {
-    chunks.emplace_back();
-    chunks.back().text = text;
-  }
+  std::vector<Chunk> chunks = plain_chunks<Chunk>(data);
   // Counted first, so that every chunk is read straight into its rows of the mesh.
   for_each_chunk(chunks.size(), [&](std::size_t k) { count_records(chunks[k]); });
   Eigen::Index nv = 0, nf = 0;
   for (Chunk& c : chunks) {
+    if (!c.plain) return false;
     c.first_vertex = nv;
     c.first_face = nf;
     nv += c.vertices;
@@ -91,17 +81,9 @@ bool read_plain_obj(std::string_view data, Soup& soup) {
   mesh.V.resize(nv, 3);
   mesh.F.resize(nf, 3);
   for_each_chunk(chunks.size(), [&](std::size_t k) { parse_chunk(chunks[k], mesh.V, mesh.F); });
-  PlainBounds bounds;
-  for (const Chunk& c : chunks) {
-    if (!c.plain) return false;
-    bounds.add(c.bounds);
-  }
-  // Coordinates within validate_mesh's span, every index within the file's vertices (a face
-  // may name a vertex listed after it).
-  if (!bounds.within_span() || mesh.F.maxCoeff() >= nv) return false;
-  soup.mesh = std::move(mesh);
-  soup.direct_dropped = 0;
-  soup.direct = true;
+  // Every index within the file's vertices (a face may name a vertex listed after it).
+  if (!all_plain(chunks) || mesh.F.maxCoeff() >= nv) return false;
+  take_direct(std::move(mesh), soup);
   return true;
 }
 

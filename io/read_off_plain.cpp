@@ -10,24 +10,18 @@
 namespace msmesh::io_detail {
 namespace {
 
-struct Chunk {
-  std::string_view text;
-  long long records = 0;       // non-blank lines
-  long long first_record = 0;  // the file's record number of the first
-  PlainBounds bounds;
-  bool plain = true;
+/// A chunk's records (non-blank lines) and the file's record number of its first.
+struct Chunk : PlainChunk {
+  long long records = 0, first_record = 0;
 };
 
 /// The non-blank lines of c; any comment makes the file not plain.
 void count_records(Chunk& c) {
-  const char* const end = c.text.data() + c.text.size();
-  for (const char* p = c.text.data(); p < end;) {
-    while (p < end && *p != '\n' && is_space(*p)) ++p;
-    if (p < end && *p == '#') c.plain = false;
-    c.records += p < end && *p != '\n';
-    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
-    p = nl ? static_cast<const char*>(nl) + 1 : end;
-  }
+  for_each_line(c.text, [&](const char* p, const char* end) {
+    if (p == end || *p == '\n') return;
+    c.plain = c.plain && *p != '#';
+    ++c.records;
+  });
 }
 
 /// Parses chunk c's records into V (records before nv) and F (the next nf); stops at the
@@ -64,11 +58,7 @@ void parse_chunk(Chunk& c, long long nv, long long nf, Eigen::MatrixXd& V, Eigen
 
 bool read_plain_off(std::string_view body, long long vertices, long long faces, Soup& soup) {
   if (vertices <= 0 || faces <= 0 || vertices > INT_MAX || faces > INT_MAX) return false;
-  std::vector<Chunk> chunks;
-  for (const std::string_view text : line_chunks(body)) {
-    chunks.emplace_back();
-    chunks.back().text = text;
-  }
+  std::vector<Chunk> chunks = plain_chunks<Chunk>(body);
   for_each_chunk(chunks.size(), [&](std::size_t k) { count_records(chunks[k]); });
   long long records = 0;
   for (Chunk& c : chunks) {
@@ -81,15 +71,8 @@ bool read_plain_off(std::string_view body, long long vertices, long long faces, 
   mesh.V.resize(vertices, 3);
   mesh.F.resize(faces, 3);
   for_each_chunk(chunks.size(), [&](std::size_t k) { parse_chunk(chunks[k], vertices, faces, mesh.V, mesh.F); });
-  PlainBounds bounds;
-  for (const Chunk& c : chunks) {
-    if (!c.plain) return false;
-    bounds.add(c.bounds);
-  }
-  if (!bounds.within_span()) return false;
-  soup.mesh = std::move(mesh);
-  soup.direct_dropped = 0;
-  soup.direct = true;
+  if (!all_plain(chunks)) return false;
+  take_direct(std::move(mesh), soup);
   return true;
 }
 

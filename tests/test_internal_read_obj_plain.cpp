@@ -6,30 +6,18 @@
 #include <vector>
 
 #include "../io/read_obj_plain.h"
-#include "msmesh/errors.h"
-#include "msmesh/read_mesh.h"
 #include "msmesh/threads.h"
+#include "read_helpers.h"
 #include "test_helpers.h"
 
 using namespace msmesh;
+using msmesh::test::expect_same_read;
+using msmesh::test::read_from_memory;
+using msmesh::test::ReadResult;
 
 namespace {
 
-struct ObjRead {
-  Mesh mesh;
-  ReadNotes notes;
-  std::string error;
-};
-
-ObjRead read_obj_text(const std::string& text) {
-  ObjRead r;
-  try {
-    r.mesh = read_mesh_from_memory(text, "obj", "plain.obj", r.notes);
-  } catch (const IoError& e) {
-    r.error = e.what();
-  }
-  return r;
-}
+ReadResult read_obj_text(const std::string& text) { return read_from_memory(text, "obj", "plain.obj"); }
 
 /// `text` read as it is, and with a texture-coordinate record added at the end, which no face
 /// uses (the same mesh) but which makes the file not plain: the line-by-line reader reads it.
@@ -38,16 +26,7 @@ void expect_read_as_the_general_reader(const std::string& text) {
   io_detail::Soup soup;
   EXPECT_FALSE(io_detail::read_plain_obj(general, soup));
   EXPECT_FALSE(soup.direct);
-  const ObjRead a = read_obj_text(text), b = read_obj_text(general);
-  EXPECT_EQ(a.error, b.error);
-  ASSERT_EQ(a.mesh.V.rows(), b.mesh.V.rows());
-  ASSERT_EQ(a.mesh.F.rows(), b.mesh.F.rows());
-  EXPECT_TRUE(a.mesh.V == b.mesh.V);  // bit for bit
-  EXPECT_TRUE(a.mesh.F == b.mesh.F);
-  EXPECT_EQ(a.mesh.position_type, b.mesh.position_type);
-  EXPECT_EQ(a.notes.dropped_degenerate, b.notes.dropped_degenerate);
-  EXPECT_EQ(a.notes.dropped, b.notes.dropped);
-  EXPECT_EQ(a.notes.had_normals, b.notes.had_normals);
+  expect_same_read(read_obj_text(text), read_obj_text(general));
 }
 
 bool plain(const std::string& text) {
@@ -81,7 +60,7 @@ TEST(InternalReadPlainObj, PlainFilesAreReadStraightIntoTheMesh) {
     expect_read_as_the_general_reader(c.text);
     EXPECT_EQ(read_obj_text(c.text).error, "");
   }
-  const ObjRead r = read_obj_text(kSquare);
+  const ReadResult r = read_obj_text(kSquare);
   ASSERT_EQ(r.mesh.F.rows(), 2);
   EXPECT_EQ(r.mesh.V(3, 1), 0.7);
   EXPECT_EQ(r.mesh.V(3, 2), -0.25);
@@ -120,7 +99,7 @@ TEST(InternalReadPlainObj, EverythingElseIsLeftToTheLineByLineReader) {
   for (const Case& c : cases) {
     SCOPED_TRACE(c.what);
     EXPECT_FALSE(plain(c.text));
-    const ObjRead r = read_obj_text(c.text);
+    const ReadResult r = read_obj_text(c.text);
     if (c.error.empty()) {
       EXPECT_EQ(r.error, "");
     } else {
@@ -151,7 +130,7 @@ TEST(InternalReadPlainObj, LargeFilesReadInChunksAsTheGeneralReaderAtEveryThread
     set_threads(n);
     EXPECT_TRUE(plain(text));
     expect_read_as_the_general_reader(text);
-    const ObjRead r = read_obj_text(text);
+    const ReadResult r = read_obj_text(text);
     EXPECT_TRUE(r.mesh.V == sphere.V);
     EXPECT_TRUE(r.mesh.F == sphere.F);
     // A bad line late in the file leaves the whole file to the line-by-line reader.

@@ -6,30 +6,18 @@
 #include <string>
 
 #include "../io/read_off_plain.h"
-#include "msmesh/errors.h"
-#include "msmesh/read_mesh.h"
 #include "msmesh/threads.h"
+#include "read_helpers.h"
 #include "test_helpers.h"
 
 using namespace msmesh;
+using msmesh::test::expect_same_read;
+using msmesh::test::read_from_memory;
+using msmesh::test::ReadResult;
 
 namespace {
 
-struct OffRead {
-  Mesh mesh;
-  ReadNotes notes;
-  std::string error;
-};
-
-OffRead read_off_text(const std::string& text) {
-  OffRead r;
-  try {
-    r.mesh = read_mesh_from_memory(text, "off", "plain.off", r.notes);
-  } catch (const IoError& e) {
-    r.error = e.what();
-  }
-  return r;
-}
+ReadResult read_off_text(const std::string& text) { return read_from_memory(text, "off", "plain.off"); }
 
 /// read_plain_off on the body of `text` (after "OFF" and the three counts).
 bool plain(const std::string& text) {
@@ -48,17 +36,7 @@ bool plain(const std::string& text) {
 void expect_read_as_cgal_reads(const std::string& text) {
   const std::string general = text + (text.empty() || text.back() == '\n' ? "" : "\n") + "# end\n";
   EXPECT_FALSE(plain(general));
-  const OffRead a = read_off_text(text), b = read_off_text(general);
-  EXPECT_EQ(a.error, b.error);
-  ASSERT_EQ(a.mesh.V.rows(), b.mesh.V.rows());
-  ASSERT_EQ(a.mesh.F.rows(), b.mesh.F.rows());
-  EXPECT_TRUE(a.mesh.V == b.mesh.V);  // bit for bit
-  EXPECT_TRUE(a.mesh.F == b.mesh.F);
-  EXPECT_EQ(a.mesh.position_type, b.mesh.position_type);
-  EXPECT_EQ(a.mesh.vertex_colors.size(), b.mesh.vertex_colors.size());
-  EXPECT_EQ(a.notes.dropped_degenerate, b.notes.dropped_degenerate);
-  EXPECT_EQ(a.notes.dropped, b.notes.dropped);
-  EXPECT_EQ(a.notes.had_normals, b.notes.had_normals);
+  expect_same_read(read_off_text(text), read_off_text(general));
 }
 
 const std::string kSquare = "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0.1 0.7 -0.25\n3 0 1 2\n3 0 2 3\n";
@@ -83,7 +61,7 @@ TEST(InternalReadPlainOff, PlainFilesAreReadStraightIntoTheMesh) {
     expect_read_as_cgal_reads(c.text);
     EXPECT_EQ(read_off_text(c.text).error, "");
   }
-  const OffRead r = read_off_text(kSquare);
+  const ReadResult r = read_off_text(kSquare);
   ASSERT_EQ(r.mesh.F.rows(), 2);
   EXPECT_EQ(r.mesh.V(3, 1), 0.7);
   EXPECT_EQ(r.mesh.V(3, 2), -0.25);
@@ -114,7 +92,7 @@ TEST(InternalReadPlainOff, EverythingElseIsLeftToCgalsReader) {
   for (const Case& c : cases) {
     SCOPED_TRACE(c.what);
     EXPECT_FALSE(plain(c.text));
-    const OffRead r = read_off_text(c.text);
+    const ReadResult r = read_off_text(c.text);
     if (c.error.empty()) {
       EXPECT_EQ(r.error, "");
     } else {
@@ -145,7 +123,7 @@ TEST(InternalReadPlainOff, LargeFilesReadInChunksAsCgalReadsThemAtEveryThreadCou
     set_threads(n);
     EXPECT_TRUE(plain(text));
     expect_read_as_cgal_reads(text);
-    const OffRead r = read_off_text(text);
+    const ReadResult r = read_off_text(text);
     EXPECT_TRUE(r.mesh.V == sphere.V);
     EXPECT_TRUE(r.mesh.F == sphere.F);
   }

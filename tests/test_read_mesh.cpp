@@ -27,10 +27,14 @@
 #include "msmesh/shapes.h"
 #include "msmesh/threads.h"
 #include "msmesh/write_mesh.h"
+#include "read_helpers.h"
 #include "test_helpers.h"
 
 using namespace msmesh;
+using msmesh::test::expect_same_read;
 using msmesh::test::read_bytes;
+using msmesh::test::read_from_memory;
+using msmesh::test::ReadResult;
 using msmesh::test::TempDir;
 using msmesh::test::write_bytes;
 namespace fs = std::filesystem;
@@ -178,36 +182,6 @@ std::string binary_ply(const std::vector<std::array<double, 3>>& points, const s
   return s;
 }
 
-/// What read_mesh_from_memory gives for `bytes`: the mesh and notes, or the error message.
-struct ReadResult {
-  Mesh mesh;
-  ReadNotes notes;
-  std::string error;
-};
-ReadResult read_ply_bytes(const std::string& bytes, const std::string& path) {
-  ReadResult r;
-  try {
-    r.mesh = read_mesh_from_memory(bytes, "ply", path, r.notes);
-  } catch (const IoError& e) {
-    r.error = e.what();
-  }
-  return r;
-}
-
-void expect_same_read(const ReadResult& a, const ReadResult& b) {
-  EXPECT_EQ(a.error, b.error);
-  ASSERT_EQ(a.mesh.V.rows(), b.mesh.V.rows());
-  ASSERT_EQ(a.mesh.F.rows(), b.mesh.F.rows());
-  EXPECT_TRUE(a.mesh.V == b.mesh.V);
-  EXPECT_TRUE(a.mesh.F == b.mesh.F);
-  EXPECT_EQ(a.mesh.position_type, b.mesh.position_type);
-  EXPECT_EQ(a.notes.dropped_degenerate, b.notes.dropped_degenerate);
-  EXPECT_EQ(a.notes.dropped, b.notes.dropped);
-  EXPECT_EQ(a.notes.had_normals, b.notes.had_normals);
-  EXPECT_EQ(a.mesh.vertex_colors.size() + a.mesh.vertex_normals.size() + a.mesh.uv.size(), 0);
-  EXPECT_TRUE(a.mesh.vertex_properties.empty());
-}
-
 }  // namespace
 
 TEST(ReadBinaryPly, TrianglesReadStraightIntoTheMeshAsTheGeneralReaderReadsThem) {
@@ -238,8 +212,9 @@ TEST(ReadBinaryPly, TrianglesReadStraightIntoTheMeshAsTheGeneralReaderReadsThem)
     for (bool single : {true, false}) {
       if (single && std::string(c.what).find("1e150") != std::string::npos) continue;  // no float holds 1e200
       SCOPED_TRACE(std::string(c.what) + (single ? " (float)" : " (double)"));
-      const ReadResult direct = read_ply_bytes(binary_ply(c.points, c.faces, single), "direct.ply");
-      ReadResult general = read_ply_bytes(binary_ply(c.points, c.faces, single, "element unused 0\n"), "direct.ply");
+      const ReadResult direct = read_from_memory(binary_ply(c.points, c.faces, single), "ply", "direct.ply");
+      ReadResult general =
+          read_from_memory(binary_ply(c.points, c.faces, single, "element unused 0\n"), "ply", "direct.ply");
       expect_same_read(direct, general);
       if (c.expected_error.empty()) {
         EXPECT_EQ(direct.error, "");
@@ -250,7 +225,7 @@ TEST(ReadBinaryPly, TrianglesReadStraightIntoTheMeshAsTheGeneralReaderReadsThem)
         EXPECT_NE(direct.error.find(c.expected_error), std::string::npos) << direct.error;
       }
     }
-  const ReadResult r = read_ply_bytes(binary_ply(square, two, false), "direct.ply");
+  const ReadResult r = read_from_memory(binary_ply(square, two, false), "ply", "direct.ply");
   ASSERT_EQ(r.mesh.F.rows(), 2);
   EXPECT_EQ(r.mesh.V(3, 0), 0.1);
   EXPECT_EQ(r.mesh.V(3, 1), 0.7);
