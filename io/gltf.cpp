@@ -201,6 +201,32 @@ std::vector<double> read_accessor(const std::string& path, const Model& m, int i
   return out;
 }
 
+/// What is wrong with a GLB container, or "": a 12-byte header ("glTF", version 2, the length
+/// of the whole, at most the bytes present), then chunks of an 8-byte header (length, type) and
+/// that many bytes, each within the declared length. tinygltf 2.7.0 copies the binary chunk by
+/// its declared length without checking it against the file (libFuzzer: a heap overread).
+std::string glb_container_problem(std::string_view data) {
+  auto u32 = [&](std::size_t at) {
+    const auto* b = reinterpret_cast<const unsigned char*>(data.data() + at);
+    return std::uint32_t(b[0]) | (std::uint32_t(b[1]) << 8) | (std::uint32_t(b[2]) << 16) | (std::uint32_t(b[3]) << 24);
+  };
+  if (data.size() < 12 || data.substr(0, 4) != "glTF") return "it does not start with a 12-byte 'glTF' header";
+  if (u32(4) != 2) return "version " + std::to_string(u32(4)) + " (GLB 2 is read)";
+  const std::size_t length = u32(8);
+  if (length > data.size())
+    return "the header declares " + std::to_string(length) + " bytes, but the file has " + std::to_string(data.size());
+  int chunk = 0;
+  for (std::size_t at = 12; at < length; ++chunk) {
+    if (length - at < 8) return "chunk " + std::to_string(chunk) + " is cut short in its header";
+    const std::size_t bytes = u32(at);
+    if (bytes > length - at - 8)
+      return "chunk " + std::to_string(chunk) + " declares " + std::to_string(bytes) + " bytes, but only " +
+             std::to_string(length - at - 8) + " follow it";
+    at += 8 + bytes;
+  }
+  return "";
+}
+
 /// Loads a glTF or GLB from memory; external buffers and images are looked up in `base_dir`.
 Model load_model(const std::string& path, std::string_view data, bool glb, const std::string& base_dir,
                  std::string* warnings) {
@@ -210,6 +236,10 @@ Model load_model(const std::string& path, std::string_view data, bool glb, const
   std::string err, warn;
   const auto* bytes = reinterpret_cast<const unsigned char*>(data.data());
   if (data.size() > std::numeric_limits<unsigned int>::max()) throw IoError(path + ": glTF file too large (> 4 GB)");
+  if (glb) {
+    const std::string problem = glb_container_problem(data);
+    if (!problem.empty()) throw IoError(path + ": not a valid GLB file: " + problem);
+  }
   const bool ok =
       glb ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes, static_cast<unsigned int>(data.size()), base_dir)
           : loader.LoadASCIIFromString(&model, &err, &warn, data.data(), static_cast<unsigned int>(data.size()),
