@@ -275,13 +275,16 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
 // Gᵀ L weights of its right-hand side.
 void NormalFilterRun::assemble_n_step(const PreparedMesh& mesh) {
   // Auto: the factorisation below kCgMinFaces faces (cheap there, and exact), conjugate
-  // gradients above (linear cost, where the factor grows like n^1.5), unless per-face α
+  // gradients above (linear cost, where the factor grows like n^1.5; with the single-precision
+  // Chebyshev sweeps and inexact early steps the crossover fell from 80K to between 21K and
+  // 24K faces: Cone, 61K, 0.28 → 0.21 s, a noisy 59K cube 0.55 → 0.21 s; docs/performance.md,
+  // "Issue 20, eleventh round"), unless per-face α
   // weights switch the fidelity off somewhere (inpainting): the matrix then loses its
   // diagonal dominance and the factorisation is faster at any size (docs/performance.md).
   // Below kCgMinFaces, CG too when the ADMM penalty is small against the fidelity (r ≤ 0.2 α,
   // preset smooth's r 0.1): the matrix is then nearly diagonal (κ ≈ 1.1), a few sweeps solve
   // it and beat the factorisation at any size (GNF bunny, 69K faces: 0.55 → 0.23 s).
-  constexpr Eigen::Index kCgMinFaces = 80000;
+  constexpr Eigen::Index kCgMinFaces = 25000;
   constexpr double kCgMaxPenaltyPerAlpha = 0.2;
   const bool well_conditioned = o_.penalty <= kCgMaxPenaltyPerAlpha * o_.alpha;
   const bool use_cg =

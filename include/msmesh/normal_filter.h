@@ -36,7 +36,7 @@ struct NormalFilterOptions {
   /// Record the energy (15) after every iteration in NormalFilterResult::energy_history
   /// (costs one extra pass over the edges per iteration).
   bool record_energy = false;
-  /// Solver of the N-step (2αS + r GᵀLG) N = ...; Auto: Cholesky below 80K faces, CG above.
+  /// Solver of the N-step (2αS + r GᵀLG) N = ...; Auto: Cholesky below 25K faces, CG above.
   LinearSolver solver = LinearSolver::Auto;
   /// Relative residual at which conjugate gradients stop (solver CG). 1e-6: the error figures
   /// of a denoise agree with those at 1e-8 (and with the Cholesky path) to four digits, in a
