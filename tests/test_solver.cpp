@@ -167,7 +167,10 @@ TEST(Solver, ConjugateGradientsMatchCholeskyInTheVertexUpdate) {
       o.solver = LinearSolver::CG;
       const VertexUpdateResult b = update_vertices(m.V, m.F, N, {}, o);
       ASSERT_EQ(b.solver_iterations.size(), 30u);
-      const double edge = 2.0 / 8, bound = acceleration ? 5e-5 : 1e-5;
+      // CG at the default tolerance solves a V-step only to 3 % of the last move while the
+      // vertices still move (src/vertex_update.cpp): the plain cad alternation still moves
+      // 6e-4 edges at iteration 30, measured 1.8e-5 apart.
+      const double edge = 2.0 / 8, bound = (acceleration ? 5e-5 : 1e-5) + 0.03 * b.change_history.back();
       EXPECT_LT((a.V - b.V).cwiseAbs().maxCoeff(), bound * edge) << preset << " acceleration " << acceleration;
       EXPECT_EQ(a.fallback_projections, b.fallback_projections);
     }
