@@ -239,7 +239,7 @@ const Registrar kRegistration("denoise", 50, [](CLI::App& app) {
   c->add_option("--report", a->report,
                 "Write an HTML report: 3D viewer, parameters, errors, convergence plots (-: standard output)");
   c->add_option("--solver", a->solver,
-                "Linear solver of the fixed systems: auto (Cholesky below 80K faces, conjugate gradients above), "
+                "Linear solver of the fixed systems: auto (Cholesky below ~25K faces, conjugate gradients above), "
                 "cholesky, cg")
       ->check(CLI::IsMember({"auto", "cholesky", "cg"}))
       ->capture_default_str()
