@@ -32,10 +32,6 @@ void NormalFilterOptions::validate() const { check_parameters(normal_filter_para
 
 namespace {
 
-// A solver tolerance below this asks for accurate N-steps: in double precision, and each
-// solved to it (no inexact early N-steps, run()).
-constexpr double kSingleMinTolerance = 1e-6;
-
 // The per-edge IRLA weight of φ₂ = log(1 + ρt)/ρ: φ₂'(t) = 1/(1 + ρt) (eq. 18).
 inline double irla_weight(double p_norm, const NormalFilterOptions& o) {
   return o.reweight ? 1.0 / (1.0 + o.rho * p_norm) : 1.0;
@@ -278,9 +274,9 @@ void NormalFilterRun::assemble_n_step(const PreparedMesh& mesh) {
   // gradients above (linear cost, where the factor grows like n^1.5; with the single-precision
   // Chebyshev sweeps and inexact early steps the crossover fell from 80K to between 21K and
   // 24K faces: Cone, 61K, 0.28 → 0.21 s, a noisy 59K cube 0.55 → 0.21 s; docs/performance.md,
-  // "Issue 20, eleventh round"), unless per-face α
-  // weights switch the fidelity off somewhere (inpainting): the matrix then loses its
-  // diagonal dominance and the factorisation is faster at any size (docs/performance.md).
+  // "Issue 20, eleventh round"), unless per-face α weights switch the fidelity off somewhere
+  // (inpainting): the matrix then loses its diagonal dominance and the factorisation is
+  // faster at any size (docs/performance.md).
   // Below kCgMinFaces, CG too when the ADMM penalty is small against the fidelity (r ≤ 0.2 α,
   // preset smooth's r 0.1): the matrix is then nearly diagonal (κ ≈ 1.1), a few sweeps solve
   // it and beat the factorisation at any size (GNF bunny, 69K faces: 0.55 → 0.23 s).
@@ -294,11 +290,11 @@ void NormalFilterRun::assemble_n_step(const PreparedMesh& mesh) {
   // per sweep; the unit normals it solves for are well scaled, and the figures of
   // docs/quality.md stay the same to their printed digits (docs/performance.md). Rounding the
   // matrix moves the solution by about κ·6e-8 (~4e-7 for cad's κ ≈ 6.6), so a tolerance
-  // tighter than kSingleMinTolerance (preset paper's 1e-8, exact comparisons) keeps double.
+  // tighter than kLooseSolvesFromTolerance (preset paper's 1e-8, exact comparisons) keeps double.
   using Method = detail::ConstantSystem::Method;
-  const Method method = !use_cg                                      ? Method::Cholesky
-                        : o_.solver_tolerance >= kSingleMinTolerance ? Method::CgSingle
-                                                                     : Method::Cg;
+  const Method method = !use_cg                                                    ? Method::Cholesky
+                        : o_.solver_tolerance >= detail::kLooseSolvesFromTolerance ? Method::CgSingle
+                                                                                   : Method::Cg;
   // Row f: its fidelity weight plus r·len(e) on the diagonal for each interior edge e of f,
   // −r·len(e) towards the face across e. CG takes the rows straight into its own layout (no
   // assembled matrix: 0.2 s less at 1.3M faces); the factorisation needs the matrix.
@@ -561,8 +557,8 @@ NormalFilterResult NormalFilterRun::run(const ProgressCallback& progress) {
   // correct it), never below solver_tolerance (reached as the change falls). The 1.3M-face
   // sphere: 275 → 205 sweeps, MSAE the same to 4 digits; docs/quality.md's printed digits the
   // same (docs/performance.md). The factorisation solves exactly anyway, and a tolerance below
-  // kSingleMinTolerance (preset paper's, exact comparisons) holds for every N-step.
-  const bool inexact = o_.solver_tolerance >= kSingleMinTolerance;
+  // kLooseSolvesFromTolerance (preset paper's, exact comparisons) holds for every N-step.
+  const bool inexact = o_.solver_tolerance >= detail::kLooseSolvesFromTolerance;
   constexpr double kInexactFraction = 0.01, kInexactMax = 1e-4;
   const double unit_norm = std::max(std::sqrt(area_.sum()), 1e-300);  // ‖1‖_U
   n_step_tolerance_ = inexact ? std::max(o_.solver_tolerance, kInexactMax) : o_.solver_tolerance;

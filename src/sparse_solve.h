@@ -40,6 +40,12 @@ class FixedCholesky {
   std::unique_ptr<Impl> impl_;
 };
 
+/// A solver tolerance at or above this lets the iterative solvers of the normal filter and the
+/// vertex update work loosely where the result allows it (the N-step in single precision, early
+/// N- and V-steps inexact); below it (preset paper's 1e-8, exact comparisons) every solve is in
+/// double precision and reaches the tolerance.
+constexpr double kLooseSolvesFromTolerance = 1e-6;
+
 /// A system A X = B that stays the same over the iterations (N-step, vertex update), solved
 /// by factoring once or by warm-started conjugate gradients (pcg.h); callers pick which, and
 /// for CG whether the matrix and work vectors are stored in single precision (CgSingle, the

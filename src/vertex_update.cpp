@@ -314,9 +314,10 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
   // kInexactMax (also the first V-step's), never below solver_tolerance. Cone 139 → 94 sweeps,
   // 82K sphere 77 → 51; of docs/quality.md's 29 rows 22 the same to their printed digits, 5
   // lower, 2 higher by 0.02, less than a 10 % change of ε₂ moves them (docs/performance.md,
-  // "Issue 20, eleventh round"). A tolerance below 1e-6 (preset paper's) solves every V-step to it.
-  constexpr double kInexactFraction = 0.03, kInexactMax = 1e-4, kInexactMinTolerance = 1e-6;
-  const bool inexact = v_step.iterative() && o.solver_tolerance >= kInexactMinTolerance;
+  // "Issue 20, eleventh round"). A tolerance below kLooseSolvesFromTolerance (preset paper's)
+  // solves every V-step to it.
+  constexpr double kInexactFraction = 0.03, kInexactMax = 1e-4;
+  const bool inexact = v_step.iterative() && o.solver_tolerance >= detail::kLooseSolvesFromTolerance;
   const double closeness_min = d3.minCoeff();
   for (int k = 0; k < o.max_iterations; ++k) {
     const Eigen::Index fallbacks = p_step(Fw, X, N, P);
