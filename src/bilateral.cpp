@@ -13,6 +13,7 @@
 #include "msmesh/mesh.h"
 #include "msmesh/parameters.h"
 #include "normalize.h"
+#include "parallel.h"
 
 namespace msmesh {
 
@@ -20,7 +21,10 @@ void BilateralOptions::validate() const { check_parameters(bilateral_parameters(
 
 namespace {
 
-// Faces sharing at least one vertex with each face (CSR), the face itself excluded.
+// Faces sharing at least one vertex with each face (CSR), the face itself excluded, each list in
+// the order a serial scan finds them (vertex by vertex, each vertex's faces in face order).
+// Blocks of faces are listed in parallel, each thread marking with its own array, and then
+// copied into place: the same lists whatever the number of threads.
 void face_vertex_neighbours(const Eigen::MatrixXi& F, Eigen::Index nv, std::vector<int>& start, std::vector<int>& nbr) {
   const Eigen::Index nf = F.rows();
   std::vector<int> vstart(static_cast<size_t>(nv) + 1, 0);
@@ -31,22 +35,39 @@ void face_vertex_neighbours(const Eigen::MatrixXi& F, Eigen::Index nv, std::vect
   for (Eigen::Index f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k) vfaces[fill[F(f, k)]++] = static_cast<int>(f);
   start.assign(static_cast<size_t>(nf) + 1, 0);
-  nbr.clear();
-  std::vector<int> mark(static_cast<size_t>(nf), -1);
-  for (Eigen::Index f = 0; f < nf; ++f) {
-    mark[f] = static_cast<int>(f);
-    for (int k = 0; k < 3; ++k) {
-      const int v = F(f, k);
-      for (int i = vstart[v]; i < vstart[v + 1]; ++i) {
-        const int g = vfaces[i];
-        if (mark[g] != f) {
-          mark[g] = static_cast<int>(f);
-          nbr.push_back(g);
+  const Eigen::Index nb = (nf + detail::kBlock - 1) / detail::kBlock;
+  std::vector<std::vector<int>> lists(static_cast<size_t>(nb));
+#pragma omp parallel if (nf >= detail::kBlock * 4)
+  {
+    std::vector<int> mark(static_cast<size_t>(nf), -1);
+#pragma omp for schedule(static)
+    for (Eigen::Index b = 0; b < nb; ++b) {
+      std::vector<int>& list = lists[static_cast<size_t>(b)];
+      list.reserve(static_cast<size_t>(detail::kBlock) * 13);
+      for (Eigen::Index f = b * detail::kBlock; f < std::min(nf, (b + 1) * detail::kBlock); ++f) {
+        mark[f] = static_cast<int>(f);
+        for (int k = 0; k < 3; ++k) {
+          const int v = F(f, k);
+          for (int i = vstart[v]; i < vstart[v + 1]; ++i) {
+            const int g = vfaces[i];
+            if (mark[g] != f) {
+              mark[g] = static_cast<int>(f);
+              list.push_back(g);
+            }
+          }
         }
+        start[f + 1] = static_cast<int>(list.size());  // within the block, made absolute below
       }
     }
-    start[f + 1] = static_cast<int>(nbr.size());
   }
+  std::vector<std::size_t> offset(static_cast<size_t>(nb) + 1, 0);
+  for (Eigen::Index b = 0; b < nb; ++b) offset[b + 1] = offset[b] + lists[b].size();
+  nbr.resize(offset.back());
+  detail::parallel_for_blocks(nf, [&](Eigen::Index begin, Eigen::Index end) {
+    const std::size_t b = static_cast<std::size_t>(begin / detail::kBlock);
+    std::copy(lists[b].begin(), lists[b].end(), nbr.begin() + static_cast<std::ptrdiff_t>(offset[b]));
+    for (Eigen::Index f = begin; f < end; ++f) start[f + 1] += static_cast<int>(offset[b]);
+  });
 }
 
 /// out = s / |s|, or the face's own normal `own` where the weighted sum vanishes.
@@ -125,44 +146,59 @@ Eigen::MatrixXd detail::bilateral_normals_by_pairs(const Eigen::MatrixXd& V, con
   const Eigen::VectorXd A = face_areas(Vn, F);
   std::vector<int> start, nbr;
   face_vertex_neighbours(F, V.rows(), start, nbr);
-  // Each unordered pair {f, g} once (f < g), and for every entry of the neighbour lists the
-  // pair it belongs to: f's entry for g is found in the lists of f and, from the other side,
-  // of g (a dozen entries each).
+  // Each unordered pair {f, g} once (f < g), numbered in the order of f and of g in f's list,
+  // and for every entry of the neighbour lists the pair it belongs to: f's entry for g is found
+  // in the lists of f and, from the other side, of g (a dozen entries each).
   const std::size_t entries = nbr.size();
-  std::vector<int> pair_of(entries, -1), first, second;
-  first.reserve(entries / 2);
-  second.reserve(entries / 2);
-  for (Eigen::Index f = 0; f < nf; ++f)
-    for (int i = start[f]; i < start[f + 1]; ++i) {
-      const int g = nbr[i];
-      if (g < f) continue;
-      const int p = static_cast<int>(first.size());
-      first.push_back(static_cast<int>(f));
-      second.push_back(g);
-      pair_of[i] = p;
-      for (int j = start[g]; j < start[g + 1]; ++j)
-        if (nbr[j] == f) {
-          pair_of[j] = p;
-          break;
+  std::vector<int> pair_start(static_cast<std::size_t>(nf) + 1, 0);
+  detail::parallel_for(nf, [&](Eigen::Index f) {
+    int later = 0;
+    for (int i = start[f]; i < start[f + 1]; ++i) later += nbr[i] > f;
+    pair_start[f + 1] = later;
+  });
+  for (Eigen::Index f = 0; f < nf; ++f) pair_start[f + 1] += pair_start[f];
+  const Eigen::Index np = pair_start[nf];
+  std::vector<int> pair_of(entries), first(static_cast<std::size_t>(np)), second(static_cast<std::size_t>(np));
+  detail::parallel_for(
+      nf,
+      [&](Eigen::Index f) {
+        int p = pair_start[f];
+        for (int i = start[f]; i < start[f + 1]; ++i) {
+          const int g = nbr[i];
+          if (g < f) continue;
+          first[p] = static_cast<int>(f);
+          second[p] = g;
+          pair_of[i] = p;
+          for (int j = start[g]; j < start[g + 1]; ++j)
+            if (nbr[j] == f) {
+              pair_of[j] = p;
+              break;
+            }
+          ++p;
         }
-    }
-  const Eigen::Index np = static_cast<Eigen::Index>(first.size());
+      },
+      12);
   std::vector<double> spatial(static_cast<std::size_t>(np)), range(static_cast<std::size_t>(np));
-  double sum = 0;  // sigma_s 0: the mean distance between neighbouring face centres
-  for (Eigen::Index p = 0; p < np; ++p) {
+  detail::parallel_for(np, [&](Eigen::Index p) {
     const double* a = C.data() + 3 * first[p];
     const double* b = C.data() + 3 * second[p];
     const double c0 = a[0] - b[0], c1 = a[1] - b[1], c2 = a[2] - b[2];
     spatial[p] = c0 * c0 + c1 * c1 + c2 * c2;
-    sum += std::sqrt(spatial[p]);
-  }
+    range[p] = std::sqrt(spatial[p]);  // scratch: the distances, added in pair order below
+  });
+  double sum = 0;  // sigma_s 0: the mean distance between neighbouring face centres
+  for (Eigen::Index p = 0; p < np; ++p) sum += range[p];
   const double sigma_s = np > 0 ? sum / double(np) : 1.0;
   const double is2 = 1.0 / (2 * sigma_s * sigma_s), ir2 = 1.0 / (2 * sigma_r * sigma_r);
-  for (Eigen::Index p = 0; p < np; ++p) spatial[p] = std::exp(-spatial[p] * is2);
+  detail::parallel_for(np, [&](Eigen::Index p) { spatial[p] = std::exp(-spatial[p] * is2); }, 4);
   // Entry weights without the range part: the neighbour's area times the pair's spatial weight.
   std::vector<double> weight(entries);
-  for (Eigen::Index f = 0; f < nf; ++f)
-    for (int i = start[f]; i < start[f + 1]; ++i) weight[i] = A(nbr[i]) * spatial[pair_of[i]];
+  detail::parallel_for(
+      nf,
+      [&](Eigen::Index f) {
+        for (int i = start[f]; i < start[f + 1]; ++i) weight[i] = A(nbr[i]) * spatial[pair_of[i]];
+      },
+      12);
   Rows N = face_normals(Vn, F), Nn(nf, 3);
   for (int it = 0; it < passes; ++it) {
 #pragma omp parallel for schedule(static) if (np >= 65536)

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include "parallel.h"
+
 namespace msmesh {
 
 namespace {
@@ -83,22 +85,26 @@ double mean_edge_length(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
         hi[static_cast<size_t>(fill[static_cast<size_t>(std::min(a, b))]++)] = std::max(a, b);
       }
   }
-  std::vector<int> lo_of;
-  lo_of.reserve(hi.size() / 2 + 1);
-  std::vector<int> hi_of;
-  hi_of.reserve(hi.size() / 2 + 1);
-  for (Eigen::Index v = 0; v < nv; ++v) {
-    const auto b = hi.begin() + start[static_cast<size_t>(v)], e = hi.begin() + start[static_cast<size_t>(v) + 1];
-    std::sort(b, e);
-    for (auto i = b; i != e; ++i)
-      if (i == b || *i != *(i - 1)) {
-        lo_of.push_back(static_cast<int>(v));
-        hi_of.push_back(*i);
-      }
-  }
-  Eigen::VectorXd l(static_cast<Eigen::Index>(lo_of.size()));
-  for (Eigen::Index e = 0; e < l.size(); ++e)
-    l(e) = (V.row(lo_of[static_cast<size_t>(e)]) - V.row(hi_of[static_cast<size_t>(e)])).norm();
+  // Each vertex's higher neighbours sorted and made unique in place (in parallel), then the
+  // edges numbered by a prefix over the vertices and measured in that order.
+  std::vector<int> unique(static_cast<size_t>(nv) + 1, 0);
+  detail::parallel_for(
+      nv,
+      [&](Eigen::Index v) {
+        const auto b = hi.begin() + start[static_cast<size_t>(v)], e = hi.begin() + start[static_cast<size_t>(v) + 1];
+        std::sort(b, e);
+        unique[static_cast<size_t>(v) + 1] = static_cast<int>(std::unique(b, e) - b);
+      },
+      4);
+  for (Eigen::Index v = 0; v < nv; ++v) unique[v + 1] += unique[v];
+  Eigen::VectorXd l(static_cast<Eigen::Index>(unique.back()));
+  detail::parallel_for(
+      nv,
+      [&](Eigen::Index v) {
+        const int* h = hi.data() + start[static_cast<size_t>(v)];
+        for (int e = unique[v]; e < unique[v + 1]; ++e) l(e) = (V.row(v) - V.row(*h++)).norm();
+      },
+      4);
   return l.mean();
 }
 

@@ -5,6 +5,7 @@
 
 #include "msmesh/geometry.h"
 #include "msmesh/taubin.h"
+#include "taubin_smoother.h"
 
 namespace msmesh::detail {
 
@@ -12,11 +13,12 @@ LowPassResiduals low_pass_residuals(const Eigen::MatrixXd& V, const Eigen::Matri
   LowPassResiduals r;
   // Taubin's iterations are a fixed linear map applied in turn: the light pass followed by the
   // rest is the full low pass, bit for bit.
+  const TaubinSmoother smoother(F, V.rows());
   TaubinOptions to;
   to.iterations = kLightPassIterations;
-  const Eigen::MatrixXd light = taubin_smooth(V, F, to);
+  const Eigen::MatrixXd light = smoother.apply(V, to);
   to.iterations = kLowPassIterations - kLightPassIterations;
-  r.smooth = taubin_smooth(light, F, to);
+  r.smooth = smoother.apply(light, to);
   r.normals = vertex_normals(r.smooth, F);
   r.mean_edge = mean_edge_length(r.smooth, F);
   r.used.assign(static_cast<std::size_t>(V.rows()), false);

@@ -7,6 +7,7 @@
 
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
+#include "msmesh/threads.h"
 #include "msmesh/topology.h"
 #include "test_helpers.h"
 
@@ -113,4 +114,17 @@ TEST(Geometry, MeanEdgeLengthIsTheMeanOverTheTopologysEdgesToTheLastBit) {
   Eigen::MatrixXi bad = grid.F;
   bad(0, 0) = -1;
   EXPECT_THROW(mean_edge_length(grid.V, bad), InvalidInput);
+}
+
+TEST(Geometry, MeanEdgeLengthIsTheSameBitsAtEveryThreadCount) {
+  // 19200 faces, 9602 vertices: large enough that the edges are sorted and measured in parallel.
+  const Mesh cube = test::noisy_cube(40, 0.3);
+  const double reference = edge_lengths(cube.V, build_topology(cube.F, cube.V.rows())).mean();
+  const int before = threads();
+  for (const int n : {1, 2, 3}) {
+    SCOPED_TRACE(n);
+    set_threads(n);
+    EXPECT_EQ(mean_edge_length(cube.V, cube.F), reference);
+  }
+  set_threads(before);
 }

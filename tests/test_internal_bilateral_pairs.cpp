@@ -6,6 +6,7 @@
 #include "bilateral_pairs.h"
 #include "msmesh/bilateral.h"
 #include "msmesh/shapes.h"
+#include "msmesh/threads.h"
 #include "test_helpers.h"
 
 using namespace msmesh;
@@ -33,4 +34,19 @@ TEST(BilateralPairs, SameNormalsAsTheBilateralFilter) {
   expect_same_normals(test::noisy(make_shape("fandisk", 8), 0.3), 15);
   expect_same_normals(test::noisy(test::grid(6, 0.3), 0.1), 3);  // a boundary
   expect_same_normals(test::join(test::noisy_cube(3), test::tetrahedron(), Eigen::RowVector3d(5, 0, 0)), 15);
+}
+
+TEST(BilateralPairs, SameBitsAtEveryThreadCount) {
+  // 19200 faces: the neighbour lists, the pairs and the weights are built in parallel blocks.
+  const Mesh cube = test::noisy_cube(40, 0.3);
+  const int before = threads();
+  set_threads(1);
+  const Eigen::MatrixXd one = detail::bilateral_normals_by_pairs(cube.V, cube.F, 4, 0.35);
+  for (const int n : {2, 3}) {
+    SCOPED_TRACE(n);
+    set_threads(n);
+    EXPECT_TRUE(detail::bilateral_normals_by_pairs(cube.V, cube.F, 4, 0.35) == one);
+  }
+  set_threads(before);
+  expect_same_normals(cube, 4);
 }
