@@ -1,6 +1,7 @@
 #include "msmesh/presets.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -15,6 +16,7 @@
 #include "msmesh/noise_estimate.h"
 #include "msmesh/taubin.h"
 #include "msmesh/topology.h"
+#include "parallel.h"
 #include "patch_sample.h"
 
 namespace msmesh {
@@ -175,20 +177,28 @@ PresetChoice detail::choose_preset_masked(const Eigen::MatrixXd& V, const Eigen:
   const Eigen::MatrixXd N0 = face_normals(V, F);
   const Topology t = build_topology(F, V.rows());
   const Eigen::VectorXd len = edge_lengths(V, t);
-  double total = 0, flat = 0, sharp = 0, raw_dev = 0;
-  Eigen::Index measured_faces = 0;
-  for (Eigen::Index e = 0; e < t.num_edges(); ++e) {
-    if (!t.edge_is_interior[e] || !counts(t.edge_faces(e, 0)) || !counts(t.edge_faces(e, 1))) continue;
-    const double a = std::acos(std::clamp(N.row(t.edge_faces(e, 0)).dot(N.row(t.edge_faces(e, 1))), -1.0, 1.0));
-    total += len(e);
-    if (a < kFlatAngleDeg * M_PI / 180) flat += len(e);
-    if (a > kCreaseAngleDeg * M_PI / 180) sharp += len(e);
-  }
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    if (counts(f)) {
-      raw_dev += std::acos(std::clamp(N.row(f).dot(N0.row(f)), -1.0, 1.0));
-      ++measured_faces;
+  // An angle below (above) a threshold is a cosine above (below) the threshold's cosine: no
+  // arccosine per edge.
+  const double cos_flat = std::cos(kFlatAngleDeg * M_PI / 180), cos_sharp = std::cos(kCreaseAngleDeg * M_PI / 180);
+  const auto edge_sums = detail::deterministic_sums<3>(t.num_edges(), [&](Eigen::Index e0, Eigen::Index e1, std::array<double, 3>& s) {
+    for (Eigen::Index e = e0; e < e1; ++e) {
+      if (!t.edge_is_interior[e] || !counts(t.edge_faces(e, 0)) || !counts(t.edge_faces(e, 1))) continue;
+      const double d = N.row(t.edge_faces(e, 0)).dot(N.row(t.edge_faces(e, 1)));
+      s[0] += len(e);
+      if (d > cos_flat) s[1] += len(e);
+      if (d < cos_sharp) s[2] += len(e);
     }
+  });
+  const double total = edge_sums[0], flat = edge_sums[1], sharp = edge_sums[2];
+  const auto face_sums = detail::deterministic_sums<2>(F.rows(), [&](Eigen::Index f0, Eigen::Index f1, std::array<double, 2>& s) {
+    for (Eigen::Index f = f0; f < f1; ++f)
+      if (counts(f)) {
+        s[0] += std::acos(std::clamp(N.row(f).dot(N0.row(f)), -1.0, 1.0));
+        s[1] += 1;
+      }
+  }, 8);
+  const double raw_dev = face_sums[0];
+  const auto measured_faces = static_cast<Eigen::Index>(face_sums[1]);
   c.sharp_fraction = total > 0 ? sharp / total : 0;
   c.flat_fraction = total > 0 ? flat / total : 0;
   c.noise_level = measured_faces ? raw_dev / double(measured_faces) : 0;

@@ -2,18 +2,27 @@
 #pragma once
 #include <cstddef>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace msmesh::detail {
 
 struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  std::vector<int> parent, size;
+  explicit UnionFind(std::size_t n) : parent(n), size(n, 1) { std::iota(parent.begin(), parent.end(), 0); }
   int find(int x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
   }
-  void unite(int a, int b) { parent[find(a)] = find(b); }
+  /// Joins the sets of a and b, the smaller under the larger (trees stay shallow).
+  void unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a == b) return;
+    if (size[a] > size[b]) std::swap(a, b);
+    parent[a] = b;
+    size[b] += size[a];
+  }
 };
 
 }  // namespace msmesh::detail
