@@ -16,6 +16,7 @@
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "msmesh/mesh.h"
 
@@ -27,6 +28,20 @@ inline bool host_is_little_endian() {
   unsigned char first = 0;
   std::memcpy(&first, &one, 1);
   return first == 1;
+}
+
+/// Shortest decimal form that reads back to exactly `x` (a double, or a float), appended to `s`.
+template <class Real>
+inline void append_real(std::string& s, Real x) {
+  char tmp[32];
+  const auto r = std::to_chars(tmp, tmp + sizeof tmp, x);
+  s.append(tmp, r.ptr);
+}
+
+inline void append_integer(std::string& s, long long v) {
+  char tmp[24];
+  const auto r = std::to_chars(tmp, tmp + sizeof tmp, v);
+  s.append(tmp, r.ptr);
 }
 
 /// Buffered output: formats into a string and hands it to the stream in large chunks.
@@ -46,22 +61,16 @@ class OutBuffer {
   }
   /// Shortest decimal form that reads back to exactly `x`.
   OutBuffer& real(double x) {
-    char tmp[32];
-    const auto r = std::to_chars(tmp, tmp + sizeof tmp, x);
-    buf_.append(tmp, r.ptr);
+    append_real(buf_, x);
     return maybe_flush();
   }
   /// Shortest decimal form that reads back to exactly the float `x`.
   OutBuffer& real32(float x) {
-    char tmp[32];
-    const auto r = std::to_chars(tmp, tmp + sizeof tmp, x);
-    buf_.append(tmp, r.ptr);
+    append_real(buf_, x);
     return maybe_flush();
   }
   OutBuffer& integer(long long v) {
-    char tmp[24];
-    const auto r = std::to_chars(tmp, tmp + sizeof tmp, v);
-    buf_.append(tmp, r.ptr);
+    append_integer(buf_, v);
     return maybe_flush();
   }
   /// Little-endian binary value.
@@ -89,6 +98,26 @@ class OutBuffer {
   bool little_;
   std::string buf_;
 };
+
+/// Lines 0..n-1, each formatted by line(s, i) appending to s, written in order: formatted in
+/// parallel blocks (shortest round-trip decimals are most of the writing time), a batch of
+/// blocks at a time so that the text held at once stays small.
+template <class Line>
+void write_lines(OutBuffer& o, Eigen::Index n, Line&& line) {
+  constexpr Eigen::Index kLines = 4096, kBatch = 16;
+  const Eigen::Index nb = (n + kLines - 1) / kLines;
+  std::vector<std::string> block(static_cast<std::size_t>(std::min(nb, kBatch)));
+  for (Eigen::Index b0 = 0; b0 < nb; b0 += kBatch) {
+    const Eigen::Index b1 = std::min(nb, b0 + kBatch);
+#pragma omp parallel for schedule(static) if (b1 - b0 > 1)
+    for (Eigen::Index b = b0; b < b1; ++b) {
+      std::string& s = block[static_cast<std::size_t>(b - b0)];
+      s.clear();
+      for (Eigen::Index i = b * kLines; i < std::min(n, (b + 1) * kLines); ++i) line(s, i);
+    }
+    for (Eigen::Index b = b0; b < b1; ++b) o.text(block[static_cast<std::size_t>(b - b0)]);
+  }
+}
 
 /// Shapes, index ranges and finiteness; writing a file we could not read back is refused.
 /// Throws InvalidInput naming `path` (write_mesh.cpp).

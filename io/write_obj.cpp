@@ -29,19 +29,29 @@ void write_obj(OutBuffer& o, const Mesh& m, const std::string& path) {
   o.text("# written by msmesh\n");
   // Coordinates read as float are written as float again (the same digits as the source).
   const bool f32 = m.position_type == ScalarType::Float32;
-  auto coord = [&](double x) -> OutBuffer& { return f32 ? o.real32(static_cast<float>(x)) : o.real(x); };
+  const auto coord = [f32](std::string& s, double x) {
+    if (f32)
+      append_real(s, static_cast<float>(x));
+    else
+      append_real(s, x);
+  };
   for (const std::string& lib : m.material_libraries) o.text("mtllib ").text(library_path_from(path, lib)).ch('\n');
-  for (Eigen::Index i = 0; i < m.V.rows(); ++i) {
-    o.text("v ");
-    coord(m.V(i, 0)).ch(' ');
-    coord(m.V(i, 1)).ch(' ');
-    coord(m.V(i, 2));
+  write_lines(o, m.V.rows(), [&](std::string& s, Eigen::Index i) {
+    s += "v ";
+    coord(s, m.V(i, 0));
+    s += ' ';
+    coord(s, m.V(i, 1));
+    s += ' ';
+    coord(s, m.V(i, 2));
     // "v x y z r g b" is a widespread extension; readers that do not know it ignore the rest.
     // (Alpha has no place in OBJ: unsupported_attributes names it.)
     if (colors)
-      o.ch(' ').real(m.vertex_colors(i, 0)).ch(' ').real(m.vertex_colors(i, 1)).ch(' ').real(m.vertex_colors(i, 2));
-    o.ch('\n');
-  }
+      for (int c = 0; c < 3; ++c) {
+        s += ' ';
+        append_real(s, m.vertex_colors(i, c));
+      }
+    s += '\n';
+  });
   if (uv)
     for (Eigen::Index i = 0; i < m.uv.rows(); ++i) o.text("vt ").real(m.uv(i, 0)).ch(' ').real(m.uv(i, 1)).ch('\n');
   if (corner_uv)
@@ -57,6 +67,17 @@ void write_obj(OutBuffer& o, const Mesh& m, const std::string& path) {
           .ch(' ')
           .real(m.vertex_normals(i, 2))
           .ch('\n');
+  if (!m.face_objects.size() && !m.face_groups.size() && !m.face_materials.size() && !corner_uv && !uv && !normals) {
+    write_lines(o, m.F.rows(), [&](std::string& s, Eigen::Index f) {
+      s += 'f';
+      for (int k = 0; k < 3; ++k) {
+        s += ' ';
+        append_integer(s, m.F(f, k) + 1LL);
+      }
+      s += '\n';
+    });
+    return;
+  }
   int object = -1, group = -1, material = -1;
   for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
     if (m.face_objects.size() && m.face_objects(f) >= 0 && m.face_objects(f) != object) {
