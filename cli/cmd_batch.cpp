@@ -16,6 +16,7 @@
 
 #include "command.h"
 #include "msmesh/errors.h"
+#include "runtime_settings.h"
 
 #ifndef MSMESH_PYTHON_EXECUTABLE
 #define MSMESH_PYTHON_EXECUTABLE "/usr/bin/python3"
@@ -42,9 +43,10 @@ void unset_runtime_settings() {
   unsetenv("MSMESH_NO_RESTART");
   const char* wait = std::getenv("OMP_WAIT_POLICY");
   if (wait && std::strcmp(wait, "passive") == 0) unsetenv("OMP_WAIT_POLICY");
+  const char* spin = std::getenv("GOMP_SPINCOUNT");
+  if (spin && std::strcmp(spin, kIdleSpinCount) == 0) unsetenv("GOMP_SPINCOUNT");
   const char* tunables = std::getenv("GLIBC_TUNABLES");
-  if (tunables && std::strstr(tunables, "glibc.malloc.mmap_threshold=33554432:") == tunables)
-    unsetenv("GLIBC_TUNABLES");
+  if (tunables && std::strcmp(tunables, kMallocTunables) == 0) unsetenv("GLIBC_TUNABLES");
 }
 
 [[noreturn]] void run(const std::vector<std::string>& args) {

@@ -16,14 +16,20 @@
 #include "msmesh/errors.h"
 #include "msmesh/threads.h"
 #include "number_option.h"
+#include "runtime_settings.h"
 #include "usage_error.h"
 
 namespace {
 
 // Two settings that are only read when the process starts, so msmesh restarts itself once
 // with them when the user has not chosen otherwise (docs/performance.md has the figures):
-//  - OMP_WAIT_POLICY=passive: OpenMP threads waiting at a barrier spin by default; on a busy
-//    machine a spinning thread holds a core the working thread needs (a 1 s job took 10 s).
+//  - OpenMP waits: a thread that finds no work at a barrier spins, then sleeps. libgomp's
+//    default spin (300,000 pauses, milliseconds) holds a core that another process's thread
+//    needs (a 1 s job took 10 s under a parallel build), and sleeping at once
+//    (OMP_WAIT_POLICY=passive) costs a wake-up at each of the ~1,500 loops of a small
+//    denoise (the Cone 0.40 s instead of 0.35 s on an idle machine). So: a short spin
+//    (GOMP_SPINCOUNT=kIdleSpinCount) when, at the start, no other task is running on the
+//    cores the threads would take, and passive otherwise ("Issue 20, twelfth round").
 //  - GLIBC_TUNABLES: freed memory kept for reuse rather than handed back to the system after
 //    every iteration (top_pad, trim_threshold, mmap_threshold at its 32 MB maximum): on a
 //    virtual machine every fresh page costs a fault and its zeroing. Not transparent huge
@@ -31,14 +37,44 @@ namespace {
 //    which the host has often taken back (or the kernel compacts memory for it first), so the
 //    first touch cost 3 s per GB instead of 0.4 s with 4 KB pages; the 1.3M-face denoise
 //    spent 3.4 s in the kernel instead of 0.65 s (docs/performance.md, "Issue 20, sixth round").
-constexpr const char* kMallocTunables =
-    "glibc.malloc.mmap_threshold=33554432:glibc.malloc.top_pad=67108864:glibc.malloc.trim_threshold=1073741824";
+using msmesh::cli::kIdleSpinCount;
+using msmesh::cli::kMallocTunables;
+
+/// The threads the parallel loops will use: OMP_NUM_THREADS's first value when set, else every
+/// online core (what libgomp takes).
+long planned_threads(long cores) {
+  const char* env = std::getenv("OMP_NUM_THREADS");
+  if (env) {
+    char* end = nullptr;
+    const long n = std::strtol(env, &end, 10);
+    if (end != env && n > 0) return n;
+  }
+  return cores;
+}
+
+/// Whether the cores the threads would take are idle now: /proc/loadavg's count of running
+/// tasks (this process among them) against the online cores. False when it cannot tell.
+bool cores_idle_for_threads() {
+  const long cores = sysconf(_SC_NPROCESSORS_ONLN);
+  FILE* f = std::fopen("/proc/loadavg", "r");
+  if (!f || cores < 1) {
+    if (f) std::fclose(f);
+    return false;
+  }
+  double l1 = 0, l5 = 0, l15 = 0;
+  long running = 0, total = 0;
+  const int got = std::fscanf(f, "%lf %lf %lf %ld/%ld", &l1, &l5, &l15, &running, &total);
+  std::fclose(f);
+  if (got != 5) return false;
+  return (running - 1) + std::min(planned_threads(cores), cores) <= cores;
+}
 
 void restart_with_runtime_settings(char** argv) {
   if (std::getenv("MSMESH_NO_RESTART") != nullptr) return;
   bool changed = false;
   if (std::getenv("OMP_WAIT_POLICY") == nullptr && std::getenv("GOMP_SPINCOUNT") == nullptr)
-    changed |= setenv("OMP_WAIT_POLICY", "passive", 1) == 0;
+    changed |= (cores_idle_for_threads() ? setenv("GOMP_SPINCOUNT", kIdleSpinCount, 1)
+                                         : setenv("OMP_WAIT_POLICY", "passive", 1)) == 0;
   if (std::getenv("GLIBC_TUNABLES") == nullptr) changed |= setenv("GLIBC_TUNABLES", kMallocTunables, 1) == 0;
   if (!changed) return;
   setenv("MSMESH_NO_RESTART", "1", 1);
