@@ -190,7 +190,8 @@ Eigen::MatrixXd detail::bilateral_normals_by_pairs(const Eigen::MatrixXd& V, con
   for (Eigen::Index p = 0; p < np; ++p) sum += range[p];
   const double sigma_s = np > 0 ? sum / double(np) : 1.0;
   const double is2 = 1.0 / (2 * sigma_s * sigma_s), ir2 = 1.0 / (2 * sigma_r * sigma_r);
-  detail::parallel_for(np, [&](Eigen::Index p) { spatial[p] = std::exp(-spatial[p] * is2); }, 4);
+  detail::parallel_for(
+      np, [&](Eigen::Index p) { spatial[p] = std::exp(-spatial[p] * is2); }, 4);
   // Entry weights without the range part: the neighbour's area times the pair's spatial weight.
   std::vector<double> weight(entries);
   detail::parallel_for(

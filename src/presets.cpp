@@ -180,23 +180,27 @@ PresetChoice detail::choose_preset_masked(const Eigen::MatrixXd& V, const Eigen:
   // An angle below (above) a threshold is a cosine above (below) the threshold's cosine: no
   // arccosine per edge.
   const double cos_flat = std::cos(kFlatAngleDeg * M_PI / 180), cos_sharp = std::cos(kCreaseAngleDeg * M_PI / 180);
-  const auto edge_sums = detail::deterministic_sums<3>(t.num_edges(), [&](Eigen::Index e0, Eigen::Index e1, std::array<double, 3>& s) {
-    for (Eigen::Index e = e0; e < e1; ++e) {
-      if (!t.edge_is_interior[e] || !counts(t.edge_faces(e, 0)) || !counts(t.edge_faces(e, 1))) continue;
-      const double d = N.row(t.edge_faces(e, 0)).dot(N.row(t.edge_faces(e, 1)));
-      s[0] += len(e);
-      if (d > cos_flat) s[1] += len(e);
-      if (d < cos_sharp) s[2] += len(e);
-    }
-  });
+  const auto edge_sums =
+      detail::deterministic_sums<3>(t.num_edges(), [&](Eigen::Index e0, Eigen::Index e1, std::array<double, 3>& s) {
+        for (Eigen::Index e = e0; e < e1; ++e) {
+          if (!t.edge_is_interior[e] || !counts(t.edge_faces(e, 0)) || !counts(t.edge_faces(e, 1))) continue;
+          const double d = N.row(t.edge_faces(e, 0)).dot(N.row(t.edge_faces(e, 1)));
+          s[0] += len(e);
+          if (d > cos_flat) s[1] += len(e);
+          if (d < cos_sharp) s[2] += len(e);
+        }
+      });
   const double total = edge_sums[0], flat = edge_sums[1], sharp = edge_sums[2];
-  const auto face_sums = detail::deterministic_sums<2>(F.rows(), [&](Eigen::Index f0, Eigen::Index f1, std::array<double, 2>& s) {
-    for (Eigen::Index f = f0; f < f1; ++f)
-      if (counts(f)) {
-        s[0] += std::acos(std::clamp(N.row(f).dot(N0.row(f)), -1.0, 1.0));
-        s[1] += 1;
-      }
-  }, 8);
+  const auto face_sums = detail::deterministic_sums<2>(
+      F.rows(),
+      [&](Eigen::Index f0, Eigen::Index f1, std::array<double, 2>& s) {
+        for (Eigen::Index f = f0; f < f1; ++f)
+          if (counts(f)) {
+            s[0] += std::acos(std::clamp(N.row(f).dot(N0.row(f)), -1.0, 1.0));
+            s[1] += 1;
+          }
+      },
+      8);
   const double raw_dev = face_sums[0];
   const auto measured_faces = static_cast<Eigen::Index>(face_sums[1]);
   c.sharp_fraction = total > 0 ? sharp / total : 0;

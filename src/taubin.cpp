@@ -45,7 +45,8 @@ detail::TaubinSmoother::TaubinSmoother(const Eigen::MatrixXi& F, Eigen::Index nv
         int* first = nbr_.data() + start_[static_cast<std::size_t>(i)];
         int* last = nbr_.data() + start_[static_cast<std::size_t>(i) + 1];
         std::sort(first, last);
-        count_[static_cast<std::size_t>(i)] = static_cast<int>(std::unique(first, last) - first);  // an edge counts once
+        count_[static_cast<std::size_t>(i)] =
+            static_cast<int>(std::unique(first, last) - first);  // an edge counts once
       },
       4);
 }
