@@ -34,8 +34,10 @@ DenoiseOptions preset_options(const std::string& name);
 /// σ (mean edge lengths, as NoiseEstimate::sigma_rms): the class's preset with α and the
 /// pre-filter following σ (docs/presets.md, "--preset auto"). `detail` (NoiseEstimate::detail,
 /// the shape's own fine detail) raises the closeness weight of the class smooth, so that the
-/// vertex update keeps it. Throws InvalidInput for an unknown class or a negative σ or detail.
-DenoiseOptions adaptive_options(const std::string& shape_class, double sigma, double detail = 0);
+/// vertex update keeps it. `alpha_max` caps α (0: the class's cap, 10 for cad and 5 for smooth;
+/// resolve_preset gives 5 for scan-like cad meshes). Throws InvalidInput for an unknown class or a
+/// negative σ, detail or cap.
+DenoiseOptions adaptive_options(const std::string& shape_class, double sigma, double detail = 0, double alpha_max = 0);
 
 /// What the shape rule saw on a mesh, and the class it picked.
 struct PresetChoice {
@@ -72,6 +74,9 @@ struct ResolvedPreset {
   /// : noise), for the class smooth without its detail d: strength × √(σ_rms² − d²), d² =
   /// max(0, detail² − (0.5 sigma_noise)²) of the same estimate.
   double sigma = 0;
+  /// Class cad by its flat areas alone, its low-pass residual more detail than noise (auto): read
+  /// as a scan with correlated noise, whose fidelity α keeps the lower cap (docs/presets.md).
+  bool scan_like = false;
 
   /// Large meshes (auto): the faces measured, the cores of sample_patches patches spread over
   /// the mesh (0: the whole mesh was measured).
