@@ -87,22 +87,22 @@ double mean_edge_length(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   }
   // Each vertex's higher neighbours sorted and made unique in place (in parallel), then the
   // edges numbered by a prefix over the vertices and measured in that order.
-  std::vector<int> unique(static_cast<size_t>(nv) + 1, 0);
+  std::vector<int> edge_start(static_cast<size_t>(nv) + 1, 0);
   detail::parallel_for(
       nv,
       [&](Eigen::Index v) {
         const auto b = hi.begin() + start[static_cast<size_t>(v)], e = hi.begin() + start[static_cast<size_t>(v) + 1];
         std::sort(b, e);
-        unique[static_cast<size_t>(v) + 1] = static_cast<int>(std::unique(b, e) - b);
+        edge_start[static_cast<size_t>(v) + 1] = static_cast<int>(std::unique(b, e) - b);
       },
       4);
-  for (Eigen::Index v = 0; v < nv; ++v) unique[v + 1] += unique[v];
-  Eigen::VectorXd l(static_cast<Eigen::Index>(unique.back()));
+  for (Eigen::Index v = 0; v < nv; ++v) edge_start[v + 1] += edge_start[v];
+  Eigen::VectorXd l(static_cast<Eigen::Index>(edge_start.back()));
   detail::parallel_for(
       nv,
       [&](Eigen::Index v) {
         const int* h = hi.data() + start[static_cast<size_t>(v)];
-        for (int e = unique[v]; e < unique[v + 1]; ++e) l(e) = (V.row(v) - V.row(*h++)).norm();
+        for (int e = edge_start[v]; e < edge_start[v + 1]; ++e) l(e) = (V.row(v) - V.row(*h++)).norm();
       },
       4);
   return l.mean();

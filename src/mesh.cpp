@@ -18,7 +18,8 @@ void validate_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std
     os << what << ": face array must be #F by 3, got " << F.rows() << " by " << F.cols();
     throw InvalidInput(os.str());
   }
-  for (Eigen::Index i = 0; i < V.rows() && !V.allFinite(); ++i) {  // (the search only when one is there)
+  const bool all_finite = V.allFinite();  // (the search below only when there is something to find)
+  for (Eigen::Index i = 0; i < V.rows() && !all_finite; ++i) {
     for (Eigen::Index c = 0; c < V.cols(); ++c) {
       if (!std::isfinite(V(i, c))) {
         std::ostringstream os;
