@@ -109,11 +109,19 @@ void write_lines(OutBuffer& o, Eigen::Index n, Line&& line) {
   std::vector<std::string> block(static_cast<std::size_t>(std::min(nb, kBatch)));
   for (Eigen::Index b0 = 0; b0 < nb; b0 += kBatch) {
     const Eigen::Index b1 = std::min(nb, b0 + kBatch);
-#pragma omp parallel for schedule(static) if (b1 - b0 > 1)
-    for (Eigen::Index b = b0; b < b1; ++b) {
+    const auto format = [&](Eigen::Index b) {
       std::string& s = block[static_cast<std::size_t>(b - b0)];
       s.clear();
       for (Eigen::Index i = b * kLines; i < std::min(n, (b + 1) * kLines); ++i) line(s, i);
+    };
+    if (b1 - b0 > 1) {
+#pragma omp parallel for schedule(static)
+      for (Eigen::Index b = b0; b < b1; ++b) format(b);
+    } else {
+      // One block: no parallel construct at all. (The first one starts the OpenMP runtime, and
+      // LLVM's registers itself in a shared-memory file, which a file-size limit refuses: the
+      // sanitizer build crashed instead of reporting the limit on `msmesh shape cube -o`.)
+      format(b0);
     }
     for (Eigen::Index b = b0; b < b1; ++b) o.text(block[static_cast<std::size_t>(b - b0)]);
   }

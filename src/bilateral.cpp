@@ -37,27 +37,33 @@ void face_vertex_neighbours(const Eigen::MatrixXi& F, Eigen::Index nv, std::vect
   start.assign(static_cast<size_t>(nf) + 1, 0);
   const Eigen::Index nb = (nf + detail::kBlock - 1) / detail::kBlock;
   std::vector<std::vector<int>> lists(static_cast<size_t>(nb));
-#pragma omp parallel if (nf >= detail::kBlock * 4)
-  {
-    std::vector<int> mark(static_cast<size_t>(nf), -1);
-#pragma omp for schedule(static)
-    for (Eigen::Index b = 0; b < nb; ++b) {
-      std::vector<int>& list = lists[static_cast<size_t>(b)];
-      list.reserve(static_cast<size_t>(detail::kBlock) * 13);
-      for (Eigen::Index f = b * detail::kBlock; f < std::min(nf, (b + 1) * detail::kBlock); ++f) {
-        mark[f] = static_cast<int>(f);
-        for (int k = 0; k < 3; ++k) {
-          const int v = F(f, k);
-          for (int i = vstart[v]; i < vstart[v + 1]; ++i) {
-            const int g = vfaces[i];
-            if (mark[g] != f) {
-              mark[g] = static_cast<int>(f);
-              list.push_back(g);
-            }
+  const auto list_block = [&](Eigen::Index b, std::vector<int>& mark) {
+    std::vector<int>& list = lists[static_cast<size_t>(b)];
+    list.reserve(static_cast<size_t>(detail::kBlock) * 13);
+    for (Eigen::Index f = b * detail::kBlock; f < std::min(nf, (b + 1) * detail::kBlock); ++f) {
+      mark[f] = static_cast<int>(f);
+      for (int k = 0; k < 3; ++k) {
+        const int v = F(f, k);
+        for (int i = vstart[v]; i < vstart[v + 1]; ++i) {
+          const int g = vfaces[i];
+          if (mark[g] != f) {
+            mark[g] = static_cast<int>(f);
+            list.push_back(g);
           }
         }
-        start[f + 1] = static_cast<int>(list.size());  // within the block, made absolute below
       }
+      start[f + 1] = static_cast<int>(list.size());  // within the block, made absolute below
+    }
+  };
+  if (nb < 4) {  // (no parallel construct for small meshes: parallel.h says why)
+    std::vector<int> mark(static_cast<size_t>(nf), -1);
+    for (Eigen::Index b = 0; b < nb; ++b) list_block(b, mark);
+  } else {
+#pragma omp parallel
+    {
+      std::vector<int> mark(static_cast<size_t>(nf), -1);
+#pragma omp for schedule(static)
+      for (Eigen::Index b = 0; b < nb; ++b) list_block(b, mark);
     }
   }
   std::vector<std::size_t> offset(static_cast<size_t>(nb) + 1, 0);
