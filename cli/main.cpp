@@ -61,11 +61,10 @@ bool cores_idle_for_threads() {
     if (f) std::fclose(f);
     return false;
   }
-  double l1 = 0, l5 = 0, l15 = 0;
-  long running = 0, total = 0;
-  const int got = std::fscanf(f, "%lf %lf %lf %ld/%ld", &l1, &l5, &l15, &running, &total);
+  long running = 0;  // the fourth field, "running/total" (the three load averages skipped)
+  const int got = std::fscanf(f, "%*f %*f %*f %ld/", &running);
   std::fclose(f);
-  if (got != 5) return false;
+  if (got != 1) return false;
   return (running - 1) + std::min(planned_threads(cores), cores) <= cores;
 }
 
