@@ -290,15 +290,22 @@ TEST(Presets, FidelityCapIsTenForCadFiveForSmoothAndForScanLikeMeshes) {
   EXPECT_GT(r.options.normals.alpha, 5.0) << r.reason();
 }
 
-TEST(Presets, TheKinectConeIsScanLikeAndKeepsAlphaFive) {
+TEST(Presets, TheKinectConeIsScanLikeAndCountsItsDetailAsNoise) {
   // The meshtgv Cone (a Kinect scan): classed cad by its flat areas (crease fraction 0.002),
-  // the estimate reads more detail (0.070) than noise (0.035), σ_rms 0.097: α 0.75/σ would be
-  // 7.7, which took its MSAE from 63.1 to 67.9; scan-like, it keeps 5 and says so.
+  // the estimate reads more detail (0.070) than noise (0.035), σ_rms 0.097: α 0.75/σ_rms would be
+  // 7.7 (MSAE 67.9). Scan-like, its correlated noise is counted by the detail too, 3 times:
+  // σ = √(σ_rms² + 8 detail²) ≈ 0.22, α ≈ 3.4 (MSAE 57.1; 63.1 at α 5), and the reason says so.
   MSMESH_REQUIRE_SHARED(path, "meshtgv_liu2021/cone/noisy.obj");
   const Mesh cone = read_mesh(path);
   const ResolvedPreset r = resolve_preset("auto", cone.V, cone.F);
   EXPECT_EQ(r.preset, "cad");
   EXPECT_TRUE(r.scan_like) << r.reason();
-  EXPECT_DOUBLE_EQ(r.options.normals.alpha, 5.0);
+  EXPECT_FALSE(r.despiked) << r.reason();
+  const double rms = r.noise.sigma_rms, d = r.noise.detail;
+  EXPECT_GT(d, r.noise.sigma_noise);
+  EXPECT_NEAR(r.sigma, std::sqrt(rms * rms + 8 * d * d), 1e-12);
+  EXPECT_DOUBLE_EQ(r.options.normals.alpha, adaptive_options("cad", r.sigma, 0, 5.0).normals.alpha);
+  EXPECT_LT(r.options.normals.alpha, 4.0) << r.reason();
   EXPECT_NE(r.reason().find("scan-like"), std::string::npos) << r.reason();
+  EXPECT_NE(r.reason().find("detail counted 3 times"), std::string::npos) << r.reason();
 }
