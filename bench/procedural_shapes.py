@@ -2,6 +2,7 @@
 """Denoising defaults on noise that is not in ../shared: msmesh's procedural shapes, A against B.
 
     /usr/bin/python3 bench/procedural_shapes.py [--msmesh build/msmesh] [--a "--polish 0"] [--b ""] [--fine]
+                                                [--correlation K]
 
 `msmesh shape NAME -r R` for cube 24, fandisk 32, pyramid 32, cylinder 32, torus 32 and sphere 16
 (2.4K-31K faces; cube, fandisk and pyramid have creases and flat parts, the others are smooth),
@@ -14,6 +15,9 @@ used it; `--msmesh OLD --msmesh NEW` with --a "" --b "" compares two builds inst
 --fine: the same shapes finer (cube 64, fandisk, pyramid, cylinder and torus 80, sphere 64;
 49K-192K faces, √area / mean edge 138-264) at S in 0.1 0.3 0.5, where the shape class once read
 fine smooth surfaces as flat (docs/presets.md, "The flat test at any resolution").
+--correlation K: correlated noise like a depth camera's (`msmesh noise --correlation K`, made by
+B's executable: builds before it existed lack the option), S in 0.1 0.2 0.3 0.5; docs/presets.md,
+"Correlated noise".
 """
 import argparse
 import math
@@ -32,6 +36,7 @@ SHAPES = (("cube", 24), ("fandisk", 32), ("pyramid", 32), ("cylinder", 32), ("to
 SIGMAS = (0.05, 0.1, 0.2, 0.3, 0.5, 0.7)
 FINE_SHAPES = (("cube", 64), ("fandisk", 80), ("pyramid", 80), ("cylinder", 80), ("torus", 80), ("sphere", 64))
 FINE_SIGMAS = (0.1, 0.3, 0.5)
+CORRELATED_SIGMAS = (0.1, 0.2, 0.3, 0.5)
 
 
 def denoise(exe, noisy, clean, args, folder):
@@ -48,6 +53,8 @@ def main():
     ap.add_argument("--a", default="--polish 0", help="arguments of run A (default: %(default)s)")
     ap.add_argument("--b", default="", help="arguments of run B (default: none, the defaults)")
     ap.add_argument("--fine", action="store_true", help="finer shapes (49K-192K faces), sigma 0.1 0.3 0.5")
+    ap.add_argument("--correlation", type=int, default=0,
+                    help="correlated noise: msmesh noise --correlation K (0: white), sigma 0.1 0.2 0.3 0.5")
     args = ap.parse_args()
     exes = args.msmesh or [os.path.join(ROOT, "build", "msmesh")]
     exe_a, exe_b = exes[0], exes[-1]
@@ -65,10 +72,12 @@ def main():
             scoring.run([exe_a, "shape", name, "-r", str(resolution), "-o", clean, "-q"])
             faces = scoring.run([exe_a, "info", clean])[0].split("faces:")[1].split()[0]
             for direction in ("normal", "random"):
-                for sigma in FINE_SIGMAS if args.fine else SIGMAS:
+                sigmas = FINE_SIGMAS if args.fine else CORRELATED_SIGMAS if args.correlation else SIGMAS
+                for sigma in sigmas:
                     noisy = os.path.join(tmp, "noisy.obj")
-                    scoring.run([exe_a, "noise", clean, "-o", noisy, "--sigma", str(sigma), "--direction", direction,
-                                 "--seed", "17", "-q"])
+                    noise = [exe_b if args.correlation else exe_a, "noise", clean, "-o", noisy, "--sigma", str(sigma),
+                             "--direction", direction, "--seed", "17", "-q"]
+                    scoring.run(noise + (["--correlation", str(args.correlation)] if args.correlation else []))
                     ma, ca = denoise(exe_a, noisy, clean, a_args, tmp)
                     mb, cb = denoise(exe_b, noisy, clean, b_args, tmp)
                     cases += 1

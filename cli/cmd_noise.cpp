@@ -1,4 +1,4 @@
-// msmesh noise: seeded Gaussian or impulsive noise, σ in units of the mean edge length.
+// msmesh noise: seeded Gaussian (white or correlated) or impulsive noise, σ in units of the mean edge length.
 #include <iostream>
 #include <memory>
 
@@ -44,7 +44,9 @@ void run(const Args& a) {
 
   if (a.quiet) return;
   std::cout << "noise: " << a.input << " -> " << a.output << ": "
-            << (o.impulsive_fraction > 0 ? "impulsive (fraction " + fmt(o.impulsive_fraction) + ")" : "Gaussian")
+            << (o.impulsive_fraction > 0 ? "impulsive (fraction " + fmt(o.impulsive_fraction) + ")"
+                : o.correlation > 0      ? "Gaussian correlated over " + std::to_string(o.correlation) + " passes"
+                                         : "Gaussian")
             << ", sigma " << fmt(o.sigma) << " x mean edge " << fmt(l) << " = " << fmt(o.sigma * l) << ", "
             << (o.direction == NoiseDirection::Normal ? "along vertex normals" : "random directions") << ", seed "
             << o.seed << ", " << moved << "/" << mesh.V.rows() << " vertices moved\n";
@@ -65,6 +67,9 @@ const Registrar kRegistration("noise", 30, [](CLI::App& app) {
   add_number_option(c, "--impulsive", table[1], a->options,
                     "Impulsive noise: displace only this fraction of the vertices (0: every vertex)");
   add_number_option(c, "--seed", table[2], a->options, "Random seed; the same seed gives the same mesh on any machine");
+  add_number_option(c, "--correlation", table[3], a->options,
+                    "Correlated noise like a depth camera's: average the displacements with their neighbours' this "
+                    "many times, then scale back to sigma (0: white noise; not with --impulsive)");
   c->add_flag("--ascii", a->ascii, "Write PLY/STL as ascii instead of binary");
   add_quiet_flag(c, a->quiet);
   c->add_flag("--in-place", a->in_place, "Allow the output to overwrite the input file");

@@ -1,4 +1,4 @@
-// Seeded noise (msmesh/noise.h): reproducibility, the σ scale, impulsive fraction, options.
+// Seeded noise (msmesh/noise.h): reproducibility, the σ scale, impulsive fraction, correlation, options.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,6 +7,7 @@
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/noise.h"
+#include "msmesh/topology.h"
 #include "test_helpers.h"
 
 using namespace msmesh;
@@ -156,4 +157,68 @@ TEST(Noise, InvalidOptionsThrow) {
   Eigen::MatrixXi bad = m.F;
   bad(0, 0) = 9;
   EXPECT_THROW(add_noise(m.V, bad, options(0.2)), InvalidInput);
+}
+
+TEST(Noise, CorrelatedKeepsTheRmsLengthAndIsLongWaved) {
+  // Averaging over neighbours k times, then scaling back: the RMS displacement stays that of the
+  // white draw (σ × mean edge, to sampling), while neighbouring vertices move alike - the
+  // difference across an edge shrinks as k grows (white noise: √2 × the RMS).
+  const Mesh m = test::grid(70, 0.3);
+  const double l = mean_edge_length(m.V, m.F);
+  const Topology topo = build_topology(m.F, m.V.rows());
+  auto across_edges = [&](const Eigen::MatrixXd& D) {
+    double s = 0;
+    for (Eigen::Index e = 0; e < topo.num_edges(); ++e)
+      s += (D.row(topo.edges(e, 0)) - D.row(topo.edges(e, 1))).squaredNorm();
+    return std::sqrt(s / double(topo.num_edges()));
+  };
+  for (auto dir : {NoiseDirection::Normal, NoiseDirection::Random}) {
+    NoiseOptions o = options(0.25, dir);
+    const Eigen::MatrixXd white = add_noise(m.V, m.F, o) - m.V;
+    double previous = across_edges(white);
+    for (int k : {1, 4, 16}) {
+      o.correlation = k;
+      const Eigen::MatrixXd D = add_noise(m.V, m.F, o) - m.V;
+      EXPECT_NEAR(D.norm(), white.norm(), 1e-9 * white.norm()) << k;
+      EXPECT_NEAR(std::sqrt(D.rowwise().squaredNorm().mean()), 0.25 * l, 0.1 * 0.25 * l) << k;
+      const double a = across_edges(D);
+      EXPECT_LT(a, 0.7 * previous) << k;
+      previous = a;
+      EXPECT_TRUE(D == add_noise(m.V, m.F, o) - m.V) << k;  // reproducible, bit for bit
+    }
+    EXPECT_LT(previous, 0.2 * across_edges(white));
+  }
+  // Normal noise on a flat grid stays along the normal (+z), whatever the correlation.
+  const Mesh flat = test::grid(30);
+  NoiseOptions o = options(0.25);
+  o.correlation = 3;
+  EXPECT_TRUE(((add_noise(flat.V, flat.F, o) - flat.V).leftCols(2).array() == 0).all());
+}
+
+TEST(Noise, CorrelationLeavesIsolatedVerticesAndRefusesImpulsive) {
+  Mesh m = test::grid(6, 0.3);
+  m.V.conservativeResize(m.V.rows() + 1, 3);
+  m.V.row(m.V.rows() - 1) << 5, 5, 5;
+  NoiseOptions o = options(0.5);
+  o.correlation = 2;
+  const Eigen::MatrixXd out = add_noise(m.V, m.F, o);
+  EXPECT_TRUE(out.row(m.V.rows() - 1) == m.V.row(m.V.rows() - 1));
+  EXPECT_EQ(moved_rows(out, m.V), m.V.rows() - 1);
+  // Scale invariant like the white noise.
+  const Eigen::MatrixXd b = add_noise(1000.0 * m.V, m.F, o);
+  EXPECT_LT((1000.0 * out - b).cwiseAbs().maxCoeff(), 1e-9);
+  o.impulsive_fraction = 0.1;
+  try {
+    o.validate();
+    FAIL();
+  } catch (const InvalidInput& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("correlation"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("impulsive"), std::string::npos) << msg;
+  }
+  o.impulsive_fraction = 0;
+  for (int k : {-1, 1001}) {
+    o.correlation = k;
+    EXPECT_THROW(add_noise(m.V, m.F, o), InvalidInput) << k;
+  }
 }

@@ -22,10 +22,15 @@ struct NoiseOptions {
   /// `sigma` in `direction` (the literature uses a large sigma, e.g. 0.5–1, and Random).
   double impulsive_fraction = 0.0;
   std::uint64_t seed = 0;  ///< in [0, 2^53] (a value a double holds exactly, as the CLI and Python pass it)
-  void validate() const;   ///< throws InvalidInput naming the parameter and its valid range (noise_parameters())
+  /// 0: independent per vertex (white). k > 0: correlated, long-waved noise like a depth camera's:
+  /// the per-vertex displacements are averaged with their neighbours' k times (each pass v ←
+  /// (v + Σ neighbours) / (1 + degree)), then scaled back to the RMS length σ. Gaussian only (not
+  /// with impulsive noise). In [0, 1000].
+  int correlation = 0;
+  void validate() const;  ///< throws InvalidInput naming the parameter and its valid range (noise_parameters())
 };
 
-/// sigma (in [0, 1e6]), impulsive (the fraction, in [0, 1]) and seed: names, ranges and help,
+/// sigma (in [0, 1e6]), impulsive (the fraction, in [0, 1]), seed and correlation: names, ranges and help,
 /// shared by validate(), `msmesh noise` and Python (parameters.h).
 const ParameterTable<NoiseOptions>& noise_parameters();
 

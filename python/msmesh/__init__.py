@@ -327,7 +327,7 @@ for _function, _parameters in ((denoise, PARAMETERS), (filter_normals, _NORMAL_P
 
 
 def add_noise(V: ArrayLike, F: ArrayLike, sigma: float = 0.2, direction: str = "normal", impulsive: float = 0.0,
-              seed: int = 0) -> np.ndarray:
+              seed: int = 0, correlation: int = 0) -> np.ndarray:
     """Seeded noise as in the denoising literature; returns noisy V (#V, 3).
 
     sigma: standard deviation in units of the mean edge length, in [0, 1e6].
@@ -335,13 +335,17 @@ def add_noise(V: ArrayLike, F: ArrayLike, sigma: float = 0.2, direction: str = "
     impulsive: 0 for Gaussian noise on every vertex; in (0, 1] the fraction of vertices hit.
     seed: integer in [0, 2**53]; equal seeds give equal noise on any machine (and equal to
         `msmesh noise --seed`).
+    correlation: 0 for white noise; k in [1, 1000] for correlated, long-waved noise like a depth
+        camera's (the displacements averaged with their neighbours' k times, then scaled back to
+        sigma; `msmesh noise --correlation`). Not with impulsive noise.
     """
     V, F = _checks.mesh(V, F)
     sigma = _checks.real(sigma, "sigma", minimum=0.0)
     _checks.choice(direction, "direction", ("normal", "random"))
     impulsive = _checks.real(impulsive, "impulsive", minimum=0.0)
     seed = _checks.integer(seed, "seed", minimum=0, maximum=2**53)
-    return _core.add_noise(V, F, sigma, direction, impulsive, seed)
+    correlation = _checks.integer(correlation, "correlation", minimum=0, maximum=1000)
+    return _core.add_noise(V, F, sigma, direction, impulsive, seed, correlation)
 
 
 def evaluate(V: ArrayLike, F: ArrayLike, V_truth: ArrayLike, F_truth: ArrayLike) -> Dict[str, Any]:

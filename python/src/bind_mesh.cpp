@@ -20,7 +20,7 @@ namespace msmesh::python {
 namespace {
 
 py::object add_noise_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, double sigma,
-                             const std::string& direction, double impulsive, std::uint64_t seed) {
+                             const std::string& direction, double impulsive, std::uint64_t seed, int correlation) {
   NoiseOptions o;
   o.sigma = sigma;
   if (direction == "normal")
@@ -31,6 +31,7 @@ py::object add_noise_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
     throw InvalidInput("unknown noise direction '" + direction + "'; valid: normal, random");
   o.impulsive_fraction = impulsive;
   o.seed = seed;
+  o.correlation = correlation;
   const Eigen::MatrixXd noisy =
       run_without_gil(py::none(), [&](const ProgressCallback&) { return add_noise(V, F, o); });
   return to_numpy(noisy);
@@ -211,7 +212,7 @@ py::tuple make_shape_binding(const std::string& name, int resolution) {
 
 void bind_mesh(py::module_& m) {
   m.def("add_noise", &add_noise_binding, py::arg("V"), py::arg("F"), py::arg("sigma"), py::arg("direction"),
-        py::arg("impulsive"), py::arg("seed"));
+        py::arg("impulsive"), py::arg("seed"), py::arg("correlation"));
   m.def("evaluate", &evaluate_binding, py::arg("V"), py::arg("F"), py::arg("V_truth"), py::arg("F_truth"));
   m.def("read_mesh", &read_mesh_binding, py::arg("path"));
   m.def("write_mesh", &write_mesh_binding, py::arg("path"), py::arg("V"), py::arg("F"), py::arg("binary"));

@@ -110,6 +110,32 @@ def test_noise_estimate_and_strength(noisy_fandisk):
     np.testing.assert_array_equal(msmesh.taubin_smooth(V, F, iterations=0), V)
 
 
+def test_correlated_noise_reads_scan_like(tmp_path):
+    V, F = msmesh.make_shape("pyramid", 24)
+    white = msmesh.add_noise(V, F, sigma=0.2, seed=11)
+    noisy = msmesh.add_noise(V, F, sigma=0.2, seed=11, correlation=2)
+    # Same RMS length as the white draw it was averaged from, but neighbours move alike.
+    assert np.linalg.norm(noisy - V) == pytest.approx(np.linalg.norm(white - V), rel=1e-9)
+    E = np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]])
+    across = lambda X: np.linalg.norm((X - V)[E[:, 0]] - (X - V)[E[:, 1]])  # noqa: E731
+    assert across(noisy) < 0.5 * across(white)
+    _, r = msmesh.denoise(noisy, F)
+    assert "detail counted 3 times" in r["preset_reason"], r["preset_reason"]
+    assert r["noise_level_used"] > 1.5 * r["noise_sigma_rms"]
+    cli = cli_path()
+    if cli.exists():  # the same noise as `msmesh noise --correlation`
+        src, out = tmp_path / "p.ply", tmp_path / "n.ply"
+        msmesh.write_mesh(src, V, F)
+        subprocess.run([str(cli), "noise", str(src), "-o", str(out), "--sigma", "0.2", "--seed", "11",
+                        "--correlation", "2", "-q"], check=True, capture_output=True, timeout=60)
+        np.testing.assert_array_equal(msmesh.read_mesh(out)[0], noisy)
+    for bad in (-1, 1001, 1.5):
+        with pytest.raises(msmesh.InvalidInputError, match="correlation"):
+            msmesh.add_noise(V, F, correlation=bad)
+    with pytest.raises(msmesh.InvalidInputError, match="impulsive"):
+        msmesh.add_noise(V, F, impulsive=0.1, correlation=2)
+
+
 def test_denoise_report(noisy_fandisk):
     V, F, V_truth = noisy_fandisk
     V_new, r = msmesh.denoise(V, F, preset="cad", normal_iterations=10, vertex_iterations=10)

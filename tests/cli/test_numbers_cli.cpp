@@ -119,6 +119,21 @@ TEST_F(NumbersCli, ValidValuesStillWork) {
   EXPECT_EQ(test::run_cli("render " + in + " -o " + out("r.png") + " --size 64x48 --line-width 0 -q").status, 0);
 }
 
+TEST_F(NumbersCli, NoiseCorrelationIsCheckedAndNamed) {
+  expect_usage_error("noise " + in + " -o " + out("n.obj") + " --correlation -1", "--correlation");
+  expect_usage_error("noise " + in + " -o " + out("n.obj") + " --correlation 1001", "--correlation");
+  expect_usage_error("noise " + in + " -o " + out("n.obj") + " --correlation 1.5", "--correlation");
+  // Correlated impulsive noise is an impossible combination: refused before anything is written.
+  const test::CliRun bad = test::run_cli("noise " + in + " -o " + out("n.obj") + " --correlation 2 --impulsive 0.1");
+  EXPECT_NE(bad.status, 0) << bad.out;
+  EXPECT_NE(bad.out.find("correlation"), std::string::npos) << bad.out;
+  EXPECT_NE(bad.out.find("impulsive"), std::string::npos) << bad.out;
+  EXPECT_FALSE(fs::exists(out("n.obj")));
+  const test::CliRun ok = test::run_cli("noise " + in + " -o " + out("c.obj") + " --sigma 0.2 --correlation 3");
+  EXPECT_EQ(ok.status, 0) << ok.out;
+  EXPECT_NE(ok.out.find("correlated over 3 passes"), std::string::npos) << ok.out;
+}
+
 TEST(NumbersLibrary, OptionStructsCheckTheirTables) {
   NoiseOptions n;
   n.sigma = 1e308;
