@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "bilateral_pairs.h"
@@ -47,14 +48,17 @@ constexpr int kPreSmoothingPasses = 15;      // bilateral passes before measurin
 constexpr double kAlphaTimesSigma = 0.75;
 constexpr double kAlphaMinCad = 2.0, kAlphaMinSmooth = 1.5, kAlphaMaxCad = 10.0, kAlphaMaxSmooth = 5.0;
 constexpr double kAlphaMaxScanLike = 5.0;
-//   A scan-like mesh (above; not despiked) also counts its detail as noise, kScanDetailAsNoise
-//   times: σ = strength × √(σ_rms² + (k² − 1) d²). Correlated noise (a depth camera's, or white
-//   noise smoothed over a few rings) is long-waved, so the low pass reads most of it as detail and
-//   σ_rms alone asks for too little smoothing (docs/presets.md, "Correlated noise"): the Kinect
-//   Cone 63.1 → 57.1 (TGV's released 59.8); procedural cube, fandisk and pyramid (not in
-//   ../shared) with correlated noise of σ 0.2: 0.53–0.68× the MSAE; the sweep (white noise)
-//   1.001× in geometric mean, no case newly above a baseline.
-constexpr double kScanDetailAsNoise = 3.0;
+//   A cad mesh with few creases (crease fraction below kCadCreaseFraction; not despiked) counts its
+//   detail d as noise, up to kScanDetailAsNoise times: σ = strength × √(σ_rms² + w (k² − 1) d²),
+//   w = clamp((d / noise alone − kScanDetailRampFrom) / (1 − kScanDetailRampFrom), 0, 1), so 1 for
+//   a scan-like mesh (more detail than noise) and 0 below half as much, without a jump between.
+//   Correlated noise (a depth camera's, or white noise averaged over a few rings) is long-waved,
+//   so the low pass reads most of it as detail and σ_rms alone asks for too little smoothing
+//   (docs/presets.md, "Correlated noise"): the Kinect Cone 63.1 → 57.1 (w 1; TGV's released
+//   59.8), the Kinect pyramid 61.8 → 53.8 (w 0.40; TGV's 49.6); procedural cube, fandisk and
+//   pyramid (not in ../shared) with correlated noise: 0.27–0.95× the MSAE, none worse; the sweep
+//   (white noise) 1.001× in geometric mean, no case newly above a baseline.
+constexpr double kScanDetailAsNoise = 3.0, kScanDetailRampFrom = 0.5;
 constexpr double kPrefilterFrom = 0.1, kPrefilterSlope = 8.0;
 constexpr int kPrefilterMax = 5;
 //   ω₂ (smooth class) = preset smooth's ω₂ × clamp((σ − kFairnessFrom) / kFairnessSpan, kFairnessMinShare, 1):
@@ -246,10 +250,13 @@ std::string ResolvedPreset::reason() const {
                                        fixed(100 * despiked_fraction, 1) + " % of the vertices despiked at " +
                                        fixed(options.despike_threshold, 1) + " sigma, then " + noise_despiked.summary()
                                  : "";
-  const std::string detail = preset == "smooth"       ? ", sigma without the detail " + fixed(sigma, 3)
-                             : scan_like && !despiked ? ", sigma with the detail counted " +
-                                                            fixed(kScanDetailAsNoise, 0) + " times " + fixed(sigma, 3)
-                                                      : "";
+  const std::string detail =
+      preset == "smooth" ? ", sigma without the detail " + fixed(sigma, 3)
+      : detail_as_noise > 0
+          ? ", sigma with the detail counted " +
+                fixed(std::sqrt(1 + detail_as_noise * (kScanDetailAsNoise * kScanDetailAsNoise - 1)), 2) + " times " +
+                fixed(sigma, 3)
+          : "";
   const std::string polish = options.normals.polish > 0 ? ", polish " + fixed(options.normals.polish, 2) + " (range " +
                                                               fixed(options.normals.polish_range, 2) + ")"
                                                         : "";
@@ -333,9 +340,14 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   // higher cap).
   r.scan_like =
       r.preset == "cad" && r.choice.sharp_fraction < kCadCreaseFraction && measured.detail > measured.sigma_noise;
-  if (r.scan_like && !r.despiked) {
+  // Few creases and flat areas: the more of the low-pass residual reads as detail, the more of it
+  // is taken for correlated noise (weight 0 up to half as much detail as noise, 1 from as much).
+  if (r.preset == "cad" && r.choice.sharp_fraction < kCadCreaseFraction && !r.despiked) {
     const double rms = measured.sigma_rms, d = measured.detail;
-    r.sigma = strength * std::sqrt(rms * rms + (kScanDetailAsNoise * kScanDetailAsNoise - 1) * d * d);
+    const double ratio = d / std::max(measured.sigma_noise, std::numeric_limits<double>::min());
+    r.detail_as_noise = std::clamp((ratio - kScanDetailRampFrom) / (1.0 - kScanDetailRampFrom), 0.0, 1.0);
+    r.sigma =
+        strength * std::sqrt(rms * rms + r.detail_as_noise * (kScanDetailAsNoise * kScanDetailAsNoise - 1) * d * d);
   }
   r.options = adaptive_options(r.preset, r.sigma, detail, r.scan_like || r.despiked ? kAlphaMaxScanLike : 0.0);
   if (r.despiked) r.options.despike_threshold = kDespikeThreshold;

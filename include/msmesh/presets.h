@@ -72,12 +72,18 @@ struct ResolvedPreset {
   double strength = 1.0;  ///< how much to remove: 1 the default, larger smooths more
   /// The noise level the rules used: strength × σ_rms of the estimate (despiked ? noise_despiked
   /// : noise), for the class smooth without its detail d: strength × √(σ_rms² − d²), d² =
-  /// max(0, detail² − (0.5 sigma_noise)²) of the same estimate; for a scan-like mesh (not
-  /// despiked) with its detail counted as noise 3 times: strength × √(σ_rms² + 8 detail²).
+  /// max(0, detail² − (0.5 sigma_noise)²) of the same estimate; for class cad with few creases
+  /// (not despiked) with its detail counted as noise: strength × √(σ_rms² + 8 w detail²),
+  /// w = detail_as_noise.
   double sigma = 0;
+  /// Class cad by its flat areas alone, not despiked (auto): how much of the detail counts as
+  /// (correlated) noise in sigma, clamp((detail / sigma_noise − 0.5) / 0.5, 0, 1): 1 for a
+  /// scan-like mesh, 0 where the detail is at most half the noise (docs/presets.md, "Correlated
+  /// noise"). 0 otherwise.
+  double detail_as_noise = 0;
   /// Class cad by its flat areas alone, its low-pass residual more detail than noise (auto): read
   /// as a scan with correlated noise, whose fidelity α keeps the lower cap and whose detail counts
-  /// as noise (docs/presets.md, "Correlated noise").
+  /// as noise in full (detail_as_noise 1; docs/presets.md, "Correlated noise").
   bool scan_like = false;
 
   /// Large meshes (auto): the faces measured, the cores of sample_patches patches spread over

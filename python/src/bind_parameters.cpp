@@ -134,6 +134,7 @@ py::dict resolve_preset_binding(const std::string& name, const Eigen::MatrixXd& 
     d["noise_sigma_noise"] = r.noise.sigma_noise;
     d["noise_detail"] = r.noise.detail;
     d["noise_level_used"] = r.sigma;
+    d["noise_detail_as_noise"] = r.detail_as_noise;
     d["noise_despiked"] = r.despiked;
     d["noise_sigma_rms_despiked"] = r.noise_despiked.sigma_rms;
   }

@@ -120,7 +120,8 @@ def test_correlated_noise_reads_scan_like(tmp_path):
     across = lambda X: np.linalg.norm((X - V)[E[:, 0]] - (X - V)[E[:, 1]])  # noqa: E731
     assert across(noisy) < 0.5 * across(white)
     _, r = msmesh.denoise(noisy, F)
-    assert "detail counted 3 times" in r["preset_reason"], r["preset_reason"]
+    assert "detail counted 3.00 times" in r["preset_reason"], r["preset_reason"]
+    assert r["noise_detail_as_noise"] == 1.0
     assert r["noise_level_used"] > 1.5 * r["noise_sigma_rms"]
     cli = cli_path()
     if cli.exists():  # the same noise as `msmesh noise --correlation`
