@@ -59,6 +59,8 @@ constexpr double kAlphaMaxScanLike = 5.0;
 //   pyramid (not in ../shared) with correlated noise: 0.27–0.95× the MSAE, none worse; the sweep
 //   (white noise) 1.001× in geometric mean, no case newly above a baseline.
 constexpr double kScanDetailAsNoise = 3.0, kScanDetailRampFrom = 0.5;
+// How many times the detail counts as noise at weight w: √(1 + w (k² − 1)), 1 at w 0, k at w 1.
+double detail_counted_times(double w) { return std::sqrt(1 + w * (kScanDetailAsNoise * kScanDetailAsNoise - 1)); }
 constexpr double kPrefilterFrom = 0.1, kPrefilterSlope = 8.0;
 constexpr int kPrefilterMax = 5;
 //   ω₂ (smooth class) = preset smooth's ω₂ × clamp((σ − kFairnessFrom) / kFairnessSpan, kFairnessMinShare, 1):
@@ -250,13 +252,11 @@ std::string ResolvedPreset::reason() const {
                                        fixed(100 * despiked_fraction, 1) + " % of the vertices despiked at " +
                                        fixed(options.despike_threshold, 1) + " sigma, then " + noise_despiked.summary()
                                  : "";
-  const std::string detail =
-      preset == "smooth" ? ", sigma without the detail " + fixed(sigma, 3)
-      : detail_as_noise > 0
-          ? ", sigma with the detail counted " +
-                fixed(std::sqrt(1 + detail_as_noise * (kScanDetailAsNoise * kScanDetailAsNoise - 1)), 2) + " times " +
-                fixed(sigma, 3)
-          : "";
+  const std::string detail = preset == "smooth" ? ", sigma without the detail " + fixed(sigma, 3)
+                             : detail_as_noise > 0
+                                 ? ", sigma with the detail counted " +
+                                       fixed(detail_counted_times(detail_as_noise), 2) + " times " + fixed(sigma, 3)
+                                 : "";
   const std::string polish = options.normals.polish > 0 ? ", polish " + fixed(options.normals.polish, 2) + " (range " +
                                                               fixed(options.normals.polish_range, 2) + ")"
                                                         : "";
@@ -338,16 +338,16 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   // despiked one: what the spike removal leaves reads as little noise, but the vertices it moved
   // onto the low pass are not clean (cad impulsive 0.5 on the sweep: up to 1.4x the MSAE with the
   // higher cap).
-  r.scan_like =
-      r.preset == "cad" && r.choice.sharp_fraction < kCadCreaseFraction && measured.detail > measured.sigma_noise;
+  const bool few_creases = r.preset == "cad" && r.choice.sharp_fraction < kCadCreaseFraction;
+  r.scan_like = few_creases && measured.detail > measured.sigma_noise;
   // Few creases and flat areas: the more of the low-pass residual reads as detail, the more of it
   // is taken for correlated noise (weight 0 up to half as much detail as noise, 1 from as much).
-  if (r.preset == "cad" && r.choice.sharp_fraction < kCadCreaseFraction && !r.despiked) {
+  if (few_creases && !r.despiked) {
     const double rms = measured.sigma_rms, d = measured.detail;
     const double ratio = d / std::max(measured.sigma_noise, std::numeric_limits<double>::min());
     r.detail_as_noise = std::clamp((ratio - kScanDetailRampFrom) / (1.0 - kScanDetailRampFrom), 0.0, 1.0);
-    r.sigma =
-        strength * std::sqrt(rms * rms + r.detail_as_noise * (kScanDetailAsNoise * kScanDetailAsNoise - 1) * d * d);
+    const double k = detail_counted_times(r.detail_as_noise);
+    r.sigma = strength * std::sqrt(rms * rms + (k * k - 1) * d * d);
   }
   r.options = adaptive_options(r.preset, r.sigma, detail, r.scan_like || r.despiked ? kAlphaMaxScanLike : 0.0);
   if (r.despiked) r.options.despike_threshold = kDespikeThreshold;
