@@ -52,11 +52,12 @@ void parallel_for(Eigen::Index n, Body&& body, Eigen::Index row_weight = 1) {
   for (Eigen::Index i = 0; i < n; ++i) body(i);
 }
 
-/// Runs body(begin, end) over fixed blocks of [0, n), in parallel when n is large enough.
+/// Runs body(begin, end) over fixed blocks of [0, n), in parallel when n is large enough;
+/// `row_weight` as for parallel_for (a row of three columns is worth three).
 template <class Body>
-void parallel_for_blocks(Eigen::Index n, Body&& body) {
+void parallel_for_blocks(Eigen::Index n, Body&& body, Eigen::Index row_weight = 1) {
   const Eigen::Index nb = (n + kBlock - 1) / kBlock;
-  if (n < kParallelMin) {
+  if (n * row_weight < kParallelMin) {
     for (Eigen::Index b = 0; b < nb; ++b) body(b * kBlock, std::min(n, (b + 1) * kBlock));
     return;
   }

@@ -514,25 +514,28 @@ PcgStats BasicBlockPcg<Stored>::solve_layout(const double* B, double* X, double 
     for (int c = 0; c < K; ++c) alpha[c] = done[c] ? 0.0 : rz[c] / s1[0][c];
     // r −= α q; sums: r·D⁻¹r, ‖r‖². (x += α p waits for the pass that overwrites p, which
     // reads p anyway: one pass over p fewer per sweep, the same arithmetic.)
-    const auto s2 = column_sums<K, 2>(n, [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 2>& s) {
-      Stored* __restrict r = Rp;
-      const Stored* __restrict q = Qp;
-      const Stored* __restrict id = inv_d;
-      Sums rzs{}, rrs{};
-      for (Eigen::Index i = i0; i < i1; ++i) {
-        const Eigen::Index b = K * i;
-        const double di = id[i];
-        for (int c = 0; c < K; ++c) {
-          const Stored stored = static_cast<Stored>(double(r[b + c]) - alpha[c] * double(q[b + c]));
-          const double rc = stored;
-          r[b + c] = stored;
-          rzs[c] += rc * rc * di;
-          rrs[c] += rc * rc;
-        }
-      }
-      s[0] = rzs;
-      s[1] = rrs;
-    });
+    const auto s2 = column_sums<K, 2>(
+        n,
+        [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 2>& s) {
+          Stored* __restrict r = Rp;
+          const Stored* __restrict q = Qp;
+          const Stored* __restrict id = inv_d;
+          Sums rzs{}, rrs{};
+          for (Eigen::Index i = i0; i < i1; ++i) {
+            const Eigen::Index b = K * i;
+            const double di = id[i];
+            for (int c = 0; c < K; ++c) {
+              const Stored stored = static_cast<Stored>(double(r[b + c]) - alpha[c] * double(q[b + c]));
+              const double rc = stored;
+              r[b + c] = stored;
+              rzs[c] += rc * rc * di;
+              rrs[c] += rc * rc;
+            }
+          }
+          s[0] = rzs;
+          s[1] = rrs;
+        },
+        K);
     Sums beta{};
     stats.relative_residual = 0;
     for (int c = 0; c < K; ++c) {
@@ -564,19 +567,22 @@ PcgStats BasicBlockPcg<Stored>::solve_layout(const double* B, double* X, double 
     // x += α p, then p = D⁻¹ r + β p (0 for the columns that are done).
     Sums keep{};
     for (int c = 0; c < K; ++c) keep[c] = done[c] ? 0.0 : 1.0;
-    parallel_for_blocks(n, [&](Eigen::Index i0, Eigen::Index i1) {
-      double* __restrict x = X;
-      Stored* __restrict p = Pw;
-      const Stored* __restrict r = Rp;
-      for (Eigen::Index i = i0; i < i1; ++i) {
-        const double di = inv_d[i];
-        for (int c = 0; c < K; ++c) {
-          const double pc = p[K * i + c];
-          x[K * i + c] += alpha[c] * pc;
-          p[K * i + c] = static_cast<Stored>(keep[c] * (double(r[K * i + c]) * di + beta[c] * pc));
-        }
-      }
-    });
+    parallel_for_blocks(
+        n,
+        [&](Eigen::Index i0, Eigen::Index i1) {
+          double* __restrict x = X;
+          Stored* __restrict p = Pw;
+          const Stored* __restrict r = Rp;
+          for (Eigen::Index i = i0; i < i1; ++i) {
+            const double di = inv_d[i];
+            for (int c = 0; c < K; ++c) {
+              const double pc = p[K * i + c];
+              x[K * i + c] += alpha[c] * pc;
+              p[K * i + c] = static_cast<Stored>(keep[c] * (double(r[K * i + c]) * di + beta[c] * pc));
+            }
+          }
+        },
+        K);
   }
   stats.iterations = it;
   if (learn) learn_spectrum(lanczos_alpha, lanczos_beta);
@@ -754,10 +760,13 @@ PcgStats BasicBlockPcg<Stored>::solve_chebyshev(const double* B, double* X, doub
   if (converged(s0[1])) return stats;
   // x += y (the pass that ends a solve, or hands it to CG).
   auto add_correction = [&](const Stored* y) {
-    parallel_for_blocks(n, [&](Eigen::Index i0, Eigen::Index i1) {
-      double* __restrict x = X;
-      for (Eigen::Index i = K * i0; i < K * i1; ++i) x[i] += double(y[i]);
-    });
+    parallel_for_blocks(
+        n,
+        [&](Eigen::Index i0, Eigen::Index i1) {
+          double* __restrict x = X;
+          for (Eigen::Index i = K * i0; i < K * i1; ++i) x[i] += double(y[i]);
+        },
+        K);
   };
   // Sweeps the rate promises: the error falls at least like 2 q^k with q = (√κ−1)/(√κ+1).
   const double kappa = lambda_max_ / lambda_min_, q = (std::sqrt(kappa) - 1) / (std::sqrt(kappa) + 1);

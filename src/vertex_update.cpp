@@ -198,20 +198,23 @@ void v_step_rhs(const Rows& rhs0, const Rows& P, const VertexCorners& vc, double
 // The stopping test's RMS vertex move between X_prev and X.
 double rms_move(const Rows& X, const Rows& X_prev) {
   const Eigen::Index nv = X.rows();
-  return std::sqrt(detail::deterministic_sums<1>(nv,
-                                                 [&](Eigen::Index i0, Eigen::Index i1, std::array<double, 1>& s) {
-                                                   for (Eigen::Index i = i0; i < i1; ++i)
-                                                     s[0] += (X.row(i) - X_prev.row(i)).squaredNorm();
-                                                 })[0] /
+  return std::sqrt(detail::deterministic_sums<1>(
+                       nv,
+                       [&](Eigen::Index i0, Eigen::Index i1, std::array<double, 1>& s) {
+                         for (Eigen::Index i = i0; i < i1; ++i) s[0] += (X.row(i) - X_prev.row(i)).squaredNorm();
+                       },
+                       3)[0] /
                    double(nv));
 }
 
 // ‖X‖ over all its entries, summed in a fixed order (the same on any thread count).
 double frobenius_norm(const Rows& X) {
-  return std::sqrt(
-      detail::deterministic_sums<1>(X.rows(), [&](Eigen::Index i0, Eigen::Index i1, std::array<double, 1>& s) {
+  return std::sqrt(detail::deterministic_sums<1>(
+      X.rows(),
+      [&](Eigen::Index i0, Eigen::Index i1, std::array<double, 1>& s) {
         for (Eigen::Index i = i0; i < i1; ++i) s[0] += X.row(i).squaredNorm();
-      })[0]);
+      },
+      3)[0]);
 }
 
 }  // namespace
