@@ -7,6 +7,7 @@
 #include "data_notes.h"
 #include "field_files.h"
 #include "figures.h"
+#include "heap_prefault.h"
 #include "json.h"
 #include "msmesh/denoise.h"
 #include "msmesh/errors.h"
@@ -70,6 +71,15 @@ void run(const Args& a) {
   }
   const double t_read = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_read0).count();
 
+  // The memory a run needs depends on the method only (denoise_memory_estimate): checked before
+  // any work, then a share of it faulted in at once (heap_prefault.h).
+  DenoiseOptions sized;
+  sized.method = method;
+  const double memory = denoise_memory_estimate(mesh.V.rows(), mesh.F.rows(), sized);
+  check_memory(memory, a.input + ": denoising " + std::to_string(mesh.V.rows()) + " vertices and " +
+                           std::to_string(mesh.F.rows()) + " faces");
+  prefault_heap(kPrefaultShare * memory);
+
   // The bilateral baseline has its own parameters; the preset is unused (and not chosen).
   const ResolvedPreset preset =
       resolve_preset(method == DenoiseMethod::Bilateral && a.preset == "auto" ? "cad" : a.preset, mesh.V, mesh.F,
@@ -81,9 +91,6 @@ void run(const Args& a) {
                                          : a.solver == "cg"     ? LinearSolver::CG
                                                                 : LinearSolver::Auto;
   o.validate();
-  check_memory(denoise_memory_estimate(mesh.V.rows(), mesh.F.rows(), o),
-               a.input + ": denoising " + std::to_string(mesh.V.rows()) + " vertices and " +
-                   std::to_string(mesh.F.rows()) + " faces");
 
   Mesh truth;
   if (!a.truth.empty()) truth = read_mesh(a.truth);
