@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "../fuzz/mesh_check.h"
+#include "../io/read_stl_binary.h"
 #include "bad_files.h"
 #include "msmesh/errors.h"
 #include "msmesh/mesh_format.h"
@@ -265,17 +267,22 @@ TEST(ReadBinaryStl, WeldsInFirstAppearanceOrderAndDropsTrianglesRepeatingAVertex
 }
 
 TEST(ReadBinaryStl, WeldsAsAnIndependentWelderAtEveryThreadCount) {
-  // A large shuffled file (81920 triangles, first appearance is not face order): the numbers,
-  // the dropped triangles and the first non-finite triangle named must be those of an
-  // independent welder (std::map, first appearance, -0 = +0), with one thread and with two.
+  // A large shuffled file (two spheres of 81920 triangles, first appearance is not face order):
+  // the numbers (and the bits: the first appearance's -0 or +0), the dropped triangles and the
+  // first non-finite triangle named must be those of an independent welder (std::map, first
+  // appearance, -0 = +0), with one welder and with 2, 3 and 5 ranges of the file joined
+  // (read_stl_binary.h).
   const Mesh sphere = make_sphere(6);  // 81920 faces
   std::vector<std::array<float, 9>> tris;
-  for (Eigen::Index f = 0; f < sphere.F.rows(); ++f) {
-    std::array<float, 9> t;
-    for (int k = 0; k < 3; ++k)
-      for (int c = 0; c < 3; ++c) t[3 * k + c] = static_cast<float>(sphere.V(sphere.F(f, k), c));
-    tris.push_back(t);
-  }
+  for (const double shift : {0.0, 1.5})
+    for (Eigen::Index f = 0; f < sphere.F.rows(); ++f) {
+      std::array<float, 9> t;
+      for (int k = 0; k < 3; ++k)
+        for (int c = 0; c < 3; ++c)
+          t[3 * k + c] = static_cast<float>(sphere.V(sphere.F(f, k), c) + (c == 0 ? shift : 0));
+      tris.push_back(t);
+    }
+  ASSERT_EQ(tris.size() / io_detail::kStlRangeTriangles, 5u);
   std::uint32_t state = 12345;
   for (std::size_t i = tris.size() - 1; i > 0; --i) {  // a fixed shuffle: first appearance is not face order
     state = state * 1664525u + 1013904223u;
@@ -283,6 +290,9 @@ TEST(ReadBinaryStl, WeldsAsAnIndependentWelderAtEveryThreadCount) {
   }
   tris[1000] = {0, 0, 0, -0.f, 0, 0, 1, 1, 1};  // repeats a vertex after welding: dropped
   tris[2000] = {-0.f, 0, 0, 1, 1, 1, 2, 0, 0};
+  tris[100000] = {-0.f, 0, 0, 3, 3, 3, 4, 0, 0};  // a point of the first range, -0 in a later one
+  tris[110000] = {5, -0.f, 0, 6, 6, 6, 7, 0, 0};  // a point first seen in a later range, as -0 ...
+  tris[150000] = {5, 0, 0, 6, 6, 6, 8, 0, 0};     // ... and as +0 in the one after
   std::map<std::array<float, 3>, int> number;
   std::vector<std::array<float, 3>> points;
   std::vector<std::array<int, 3>> faces;
@@ -303,7 +313,7 @@ TEST(ReadBinaryStl, WeldsAsAnIndependentWelderAtEveryThreadCount) {
   nan_tris[40000][8] = std::numeric_limits<float>::infinity();
   write_bytes(dir.file("big_nan.stl"), binary_stl(nan_tris));
   const int before = threads();
-  for (const int n : {1, 2}) {
+  for (const int n : {1, 2, 3, 5}) {
     SCOPED_TRACE(n);
     set_threads(n);
     ReadNotes notes;
@@ -313,7 +323,9 @@ TEST(ReadBinaryStl, WeldsAsAnIndependentWelderAtEveryThreadCount) {
     EXPECT_EQ(notes.dropped_degenerate, static_cast<Eigen::Index>(tris.size() - faces.size()));
     bool same = true;
     for (std::size_t i = 0; i < points.size(); ++i)
-      for (int c = 0; c < 3; ++c) same = same && m.V(static_cast<Eigen::Index>(i), c) == points[i][c];
+      for (int c = 0; c < 3; ++c)
+        same = same && m.V(static_cast<Eigen::Index>(i), c) == points[i][c] &&
+               std::signbit(m.V(static_cast<Eigen::Index>(i), c)) == std::signbit(points[i][c]);
     for (std::size_t f = 0; f < faces.size(); ++f)
       for (int k = 0; k < 3; ++k) same = same && m.F(static_cast<Eigen::Index>(f), k) == faces[f][k];
     EXPECT_TRUE(same);
