@@ -270,7 +270,7 @@ TEST(ReadBinaryStl, WeldsAsAnIndependentWelderAtEveryThreadCount) {
   // A large shuffled file (two spheres of 81920 triangles, first appearance is not face order):
   // the numbers (and the bits: the first appearance's -0 or +0), the dropped triangles and the
   // first non-finite triangle named must be those of an independent welder (std::map, first
-  // appearance, -0 = +0), with one welder and with 2, 3 and 5 ranges of the file joined
+  // appearance, -0 = +0), with one welder and with 2 and 3 ranges of the file joined
   // (read_stl_binary.h).
   const Mesh sphere = make_sphere(6);  // 81920 faces
   std::vector<std::array<float, 9>> tris;
@@ -282,7 +282,7 @@ TEST(ReadBinaryStl, WeldsAsAnIndependentWelderAtEveryThreadCount) {
           t[3 * k + c] = static_cast<float>(sphere.V(sphere.F(f, k), c) + (c == 0 ? shift : 0));
       tris.push_back(t);
     }
-  ASSERT_EQ(tris.size() / io_detail::kStlRangeTriangles, 5u);
+  ASSERT_GE(tris.size() / io_detail::kStlRangeTriangles, 3u);
   std::uint32_t state = 12345;
   for (std::size_t i = tris.size() - 1; i > 0; --i) {  // a fixed shuffle: first appearance is not face order
     state = state * 1664525u + 1013904223u;
@@ -313,7 +313,7 @@ TEST(ReadBinaryStl, WeldsAsAnIndependentWelderAtEveryThreadCount) {
   nan_tris[40000][8] = std::numeric_limits<float>::infinity();
   write_bytes(dir.file("big_nan.stl"), binary_stl(nan_tris));
   const int before = threads();
-  for (const int n : {1, 2, 3, 5}) {
+  for (const int n : {1, 2, 3}) {
     SCOPED_TRACE(n);
     set_threads(n);
     ReadNotes notes;
