@@ -209,7 +209,8 @@ void read_binary_stl(const std::string& path, std::string_view data, std::uint32
     weld(body, ranges[0], f0, f1, f2);
   } else {
     const long count = static_cast<long>(n_ranges);
-#pragma omp parallel for schedule(static, 1) num_threads(static_cast <int>(n_ranges))
+    const int team = static_cast<int>(n_ranges);
+#pragma omp parallel for schedule(static, 1) num_threads(team)
     for (long k = 0; k < count; ++k) weld(body, ranges[std::size_t(k)], f0, f1, f2);
   }
   for (const Range& r : ranges) {
