@@ -21,7 +21,8 @@ import time
 
 import taubin as taubin_mod
 
-METRICS = ("msae_e3", "mean_angle_deg", "flipped", "dist_mean_e3", "dist_max_e3")
+METRICS = ("msae_e3", "mean_angle_deg", "flipped", "dist_mean_e3", "dist_max_e3", "truth_folded",
+           "flipped_outside_folds", "msae_outside_folds_e3")
 
 
 def file_md5(path, _memo={}, _lock=threading.Lock()):

@@ -47,7 +47,10 @@ void run(const Args& a) {
       j.add("msae", ev.normals.msae)
           .add("msae_e3", ev.normals.msae * 1e3)
           .add("mean_angle_deg", ev.normals.mean_angle_deg)
-          .add("flipped", static_cast<long long>(ev.normals.flipped));
+          .add("flipped", static_cast<long long>(ev.normals.flipped))
+          .add("truth_folded", static_cast<long long>(ev.normals.truth_folded))
+          .add("flipped_outside_folds", static_cast<long long>(ev.normals.flipped_outside_folds))
+          .add("msae_outside_folds_e3", ev.normals.msae_outside_folds * 1e3);
     } else {
       j.add("normal_metrics", why);
     }
@@ -70,6 +73,10 @@ void run(const Args& a) {
               << fmt(ev.normals.msae * 1e3) << " x 1e-3\n";
     std::cout << "  mean normal angle:      " << fmt(ev.normals.mean_angle_deg) << " deg\n";
     std::cout << "  flipped faces (> 90 deg): " << ev.normals.flipped << " of " << result.F.rows() << "\n";
+    if (ev.normals.truth_folded > 0)
+      std::cout << "  the truth folds " << ev.normals.truth_folded
+                << " faces against their neighbours; without them: MSAE " << fmt(ev.normals.msae_outside_folds * 1e3)
+                << " x 1e-3, flipped " << ev.normals.flipped_outside_folds << "\n";
   } else {
     std::cout << "  " << why << "; only distances are reported\n";
   }

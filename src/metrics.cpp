@@ -108,6 +108,49 @@ class PointGrid {
 
 }  // namespace
 
+std::vector<char> truth_folded_faces(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
+  validate_mesh(V, F, "truth");
+  const Eigen::Index nf = F.rows();
+  // Unnormalised normals (2 × area × unit normal), summed per vertex: a face's ring is the sum
+  // over its corners less itself (three times), in which its edge neighbours count twice.
+  Eigen::MatrixXd C(nf, 3);
+  Eigen::MatrixXd at_vertex = Eigen::MatrixXd::Zero(V.rows(), 3);
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    const Eigen::Vector3d a = V.row(F(f, 0)), b = V.row(F(f, 1)), c = V.row(F(f, 2));
+    C.row(f) = (b - a).cross(c - a).transpose();
+    for (int k = 0; k < 3; ++k) at_vertex.row(F(f, k)) += C.row(f);
+  }
+  // The edge neighbours: each face's sides by their sorted vertex pair; faces listed next to
+  // each other after sorting share that edge (on a non-manifold edge, each with the next).
+  struct Side {
+    long long key;
+    Eigen::Index face;
+  };
+  std::vector<Side> sides;
+  sides.reserve(static_cast<std::size_t>(3 * nf));
+  const long long nv = V.rows();
+  for (Eigen::Index f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const long long a = F(f, k), b = F(f, (k + 1) % 3);
+      sides.push_back({std::min(a, b) * nv + std::max(a, b), f});
+    }
+  std::sort(sides.begin(), sides.end(),
+            [](const Side& x, const Side& y) { return x.key != y.key ? x.key < y.key : x.face < y.face; });
+  Eigen::MatrixXd across = Eigen::MatrixXd::Zero(nf, 3);
+  for (std::size_t i = 0; i + 1 < sides.size(); ++i) {
+    if (sides[i].key != sides[i + 1].key || sides[i].face == sides[i + 1].face) continue;
+    across.row(sides[i].face) += C.row(sides[i + 1].face);
+    across.row(sides[i + 1].face) += C.row(sides[i].face);
+  }
+  std::vector<char> folded(static_cast<std::size_t>(nf), 0);
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    const Eigen::RowVector3d ring =
+        at_vertex.row(F(f, 0)) + at_vertex.row(F(f, 1)) + at_vertex.row(F(f, 2)) - 3 * C.row(f);
+    folded[static_cast<std::size_t>(f)] = C.row(f).dot(ring) < 0 && C.row(f).dot(across.row(f)) < 0;
+  }
+  return folded;
+}
+
 NormalErrors normal_errors(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& V_truth,
                            const Eigen::MatrixXi& F_truth) {
   validate_mesh(V, F, "result");
@@ -129,9 +172,10 @@ NormalErrors normal_errors(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, c
 
   const Eigen::MatrixXd N = face_normals(V, F);
   const Eigen::MatrixXd Nt = face_normals(V_truth, F_truth);
+  const std::vector<char> folded = truth_folded_faces(V_truth, F_truth);
   NormalErrors e;
   e.angle_rad.resize(F.rows());
-  double sum = 0, sum2 = 0;
+  double sum = 0, sum2 = 0, sum2_outside = 0;
   for (Eigen::Index f = 0; f < F.rows(); ++f) {
     const Eigen::Vector3d a = N.row(f).transpose(), b = Nt.row(f).transpose();
     const bool da = a.squaredNorm() == 0, db = b.squaredNorm() == 0;
@@ -148,11 +192,18 @@ NormalErrors normal_errors(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, c
     sum += theta;
     sum2 += theta * theta;
     if (theta > kPi / 2) ++e.flipped;
+    if (folded[static_cast<std::size_t>(f)]) {
+      ++e.truth_folded;
+    } else {
+      sum2_outside += theta * theta;
+      if (theta > kPi / 2) ++e.flipped_outside_folds;
+    }
   }
   if (F.rows() > 0) {
     e.msae = sum2 / double(F.rows());
     e.mean_angle_deg = sum / double(F.rows()) * 180.0 / kPi;
   }
+  if (F.rows() > e.truth_folded) e.msae_outside_folds = sum2_outside / double(F.rows() - e.truth_folded);
   return e;
 }
 

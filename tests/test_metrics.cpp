@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -79,6 +80,43 @@ TEST(Metrics, ReversedFaceCountsAsFlipped) {
   const NormalErrors e2 = normal_errors(r2.V, r2.F, t2.V, t2.F);
   EXPECT_EQ(e2.flipped, 1);
   EXPECT_NEAR(e2.mean_angle_deg, 90.0, 1e-12);  // (180 + 0) / 2
+}
+
+TEST(Metrics, FacesTheTruthFoldsAreCountedApart) {
+  // No fold on closed or open surfaces, smooth or with creases.
+  for (const Mesh& m : {test::grid(8, 0.3), make_sphere(2), make_fandisk_like(6), make_cube(3)}) {
+    const std::vector<char> folded = truth_folded_faces(m.V, m.F);
+    EXPECT_EQ(std::count(folded.begin(), folded.end(), 1), 0);
+    EXPECT_EQ(normal_errors(m.V, m.F, m.V, m.F).truth_folded, 0);
+  }
+  // A truth with one face turned over against its neighbours; a result that lies flat there.
+  const Mesh result = test::grid(5, 0.2);
+  Mesh truth = result;
+  std::swap(truth.F(7, 1), truth.F(7, 2));
+  const std::vector<char> folded = truth_folded_faces(truth.V, truth.F);
+  EXPECT_EQ(std::count(folded.begin(), folded.end(), 1), 1);
+  EXPECT_EQ(folded[7], 1);
+  const double nf = double(truth.F.rows());
+  const NormalErrors e = normal_errors(result.V, result.F, truth.V, truth.F);
+  EXPECT_EQ(e.flipped, 1);
+  EXPECT_EQ(e.truth_folded, 1);
+  EXPECT_EQ(e.flipped_outside_folds, 0);
+  EXPECT_NEAR(e.msae, kPi * kPi / nf, 1e-12);
+  EXPECT_NEAR(e.msae_outside_folds, 0.0, 1e-24);
+  // A face the result turns over where the truth is sound counts on both sides.
+  Mesh worse = result;
+  std::swap(worse.F(3, 1), worse.F(3, 2));
+  const NormalErrors w = normal_errors(worse.V, worse.F, truth.V, truth.F);
+  EXPECT_EQ(w.flipped, 2);
+  EXPECT_EQ(w.flipped_outside_folds, 1);
+  EXPECT_NEAR(w.msae_outside_folds, kPi * kPi / (nf - 1), 1e-12);
+  // The same fold made by moving a vertex: a corner of a face mirrored across its opposite
+  // edge turns that face over.
+  Mesh moved = result;
+  const int f = 12, a = result.F(f, 0), b = result.F(f, 1), c = result.F(f, 2);
+  moved.V.row(a) = result.V.row(b) + result.V.row(c) - result.V.row(a);
+  const std::vector<char> by_move = truth_folded_faces(moved.V, moved.F);
+  EXPECT_EQ(by_move[f], 1);
 }
 
 TEST(Metrics, DifferentConnectivityThrowsForNormalErrors) {

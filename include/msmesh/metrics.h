@@ -12,14 +12,29 @@ struct NormalErrors {
   double mean_angle_deg = 0;  ///< mean over faces of θ in degrees
   Eigen::Index flipped = 0;   ///< faces with θ > 90°
   Eigen::VectorXd angle_rad;  ///< #F per-face θ
+  /// Faces folded in the truth: the truth's normal points against the area-weighted normal of
+  /// the faces around it (a sliver turned over, a zig-zag: no smooth surface has them, and a
+  /// denoiser that unfolds one counts as flipping it). truth_folded_faces() says which.
+  Eigen::Index truth_folded = 0;
+  Eigen::Index flipped_outside_folds = 0;  ///< flipped faces that are not folded in the truth
+  double msae_outside_folds = 0;           ///< mean θ² over the faces not folded in the truth
 };
+
+/// #F flags: the faces of (V, F) whose normal points against both the area-weighted normals of
+/// their edge neighbours (n_f · Σ A_g n_g < 0) and those of every face sharing a vertex with
+/// them (edge neighbours counted twice): turned over against what lies around them, not only
+/// across one edge, as a face at a sharp crease or a corner of a CAD part can be. A face
+/// without neighbours or with zero area is not folded; on a tetrahedron every face is.
+/// Throws InvalidInput for an invalid mesh.
+std::vector<char> truth_folded_faces(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F);
 
 /// θ per face is the angle between the unit normals of face f in (V, F) and (V_truth, F_truth);
 /// a face with zero area has no normal: θ = π/2 against a proper face (not counted as
 /// flipped), 0 when both are degenerate. Means are unweighted over faces, as in the papers.
 /// Throws InvalidInput when F and F_truth differ (normal metrics need equal connectivity):
 /// different #F, or a face made of other vertices. A face listed with the opposite
-/// orientation is the same face, and shows as flipped.
+/// orientation is the same face, and shows as flipped. The figures outside the truth's folds
+/// leave out the faces truth_folded_faces(V_truth, F_truth) marks.
 NormalErrors normal_errors(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& V_truth,
                            const Eigen::MatrixXi& F_truth);
 

@@ -353,8 +353,10 @@ def evaluate(V: ArrayLike, F: ArrayLike, V_truth: ArrayLike, F_truth: ArrayLike)
     """Error figures of a result (V, F) against a ground truth (as `msmesh eval`).
 
     Returns a dict: same_connectivity; msae (radians^2), msae_e3 (= msae x 1e3, as printed in
-    the papers), mean_angle_deg, flipped (faces off by > 90 deg), angle_rad (#F) -- these are
-    None unless the connectivity is the same; distance_mean, distance_rms, distance_max,
+    the papers), mean_angle_deg, flipped (faces off by > 90 deg), angle_rad (#F),
+    truth_folded (faces the truth folds against their neighbours: a sliver turned over, a
+    zig-zag), flipped_outside_folds and msae_outside_folds_e3 (the same without those) -- these
+    are None unless the connectivity is the same; distance_mean, distance_rms, distance_max,
     distance_area_weighted_rms: vertex-to-truth-surface distances relative to the truth's
     bounding-box diagonal.
     """

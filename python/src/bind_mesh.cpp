@@ -49,8 +49,13 @@ py::dict evaluate_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, co
     d["mean_angle_deg"] = e.normals.mean_angle_deg;
     d["flipped"] = static_cast<long long>(e.normals.flipped);
     d["angle_rad"] = to_numpy(e.normals.angle_rad);
+    d["truth_folded"] = static_cast<long long>(e.normals.truth_folded);
+    d["flipped_outside_folds"] = static_cast<long long>(e.normals.flipped_outside_folds);
+    d["msae_outside_folds_e3"] = e.normals.msae_outside_folds * 1e3;
   } else {  // normal errors need equal connectivity
-    for (const char* key : {"msae", "msae_e3", "mean_angle_deg", "flipped", "angle_rad"}) d[key] = py::none();
+    for (const char* key : {"msae", "msae_e3", "mean_angle_deg", "flipped", "angle_rad", "truth_folded",
+                            "flipped_outside_folds", "msae_outside_folds_e3"})
+      d[key] = py::none();
   }
   d["distance_mean"] = e.distances.mean;
   d["distance_rms"] = e.distances.rms;

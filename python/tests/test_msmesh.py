@@ -302,6 +302,12 @@ def test_evaluate():
     assert not e["same_connectivity"] and e["msae"] is None
     e = msmesh.evaluate(V, F[:, ::-1], V, F)  # every face reversed: all flipped
     assert e["same_connectivity"] and e["flipped"] == F.shape[0]
+    assert e["truth_folded"] == 0 and e["flipped_outside_folds"] == F.shape[0]
+    T = F.copy()
+    T[5] = T[5][[0, 2, 1]]  # the truth turns one face over: the result's flat face there is no error of its own
+    e = msmesh.evaluate(V, F, V, T)
+    assert e["flipped"] == 1 and e["truth_folded"] == 1
+    assert e["flipped_outside_folds"] == 0 and e["msae_outside_folds_e3"] == pytest.approx(0, abs=1e-12)
 
 
 def test_add_noise_is_seeded():
