@@ -36,7 +36,11 @@ constexpr int kPreSmoothingPasses = 15;      // bilateral passes before measurin
 //   α = clamp(kAlphaTimesSigma / σ, α_min(class), kAlphaMax): more fidelity at low noise, so
 //   that detail the input still has is kept; less at heavy noise;
 //   pre-filter = round(clamp((σ − kPrefilterFrom) · kPrefilterSlope, 0, kPrefilterMax)) Taubin
-//   passes before N⁰ is taken: the first normals are usable under heavy noise.
+//   passes before N⁰ is taken: the first normals are usable under heavy noise. The class smooth
+//   takes kPrefilterSlopeSmooth and kPrefilterMaxSmooth instead (4 passes at σ 0.2, 8 at 0.3, 10
+//   from 0.35): without creases to keep, Taubin's low pass is a better start than the noisy
+//   normals (docs/presets.md, "More pre-filtering for the class smooth"; sweep 0.991×, public
+//   pairs 0.984×; the shape class is still judged on the copy of the general rule).
 //   α_max is 10 for the class cad and 5 for smooth: at σ below 0.15 more fidelity keeps what a
 //   CAD part's tessellation carries (coarse fillets, small features), while organic shapes lost
 //   with more (sweep cases at σ 0.05 and 0.1: cad geometric mean 0.89 of α_max 5, 0 of 86 cases
@@ -61,8 +65,8 @@ constexpr double kAlphaMaxScanLike = 5.0;
 constexpr double kScanDetailAsNoise = 3.0, kScanDetailRampFrom = 0.5;
 // How many times the detail counts as noise at weight w: √(1 + w (k² − 1)), 1 at w 0, k at w 1.
 double detail_counted_times(double w) { return std::sqrt(1 + w * (kScanDetailAsNoise * kScanDetailAsNoise - 1)); }
-constexpr double kPrefilterFrom = 0.1, kPrefilterSlope = 8.0;
-constexpr int kPrefilterMax = 5;
+constexpr double kPrefilterFrom = 0.1, kPrefilterSlope = 8.0, kPrefilterSlopeSmooth = 40.0;
+constexpr int kPrefilterMax = 5, kPrefilterMaxSmooth = 10;
 //   ω₂ (smooth class) = preset smooth's ω₂ × clamp((σ − kFairnessFrom) / kFairnessSpan, kFairnessMinShare, 1):
 //   the fairness term (v ≈ 1 everywhere on organic shapes) flattens curvature the input still has,
 //   so it is weak at low noise and reaches its full weight at σ 0.4.
@@ -105,9 +109,11 @@ constexpr double kPolishFullSigma = 0.2, kPolishMinShare = 0.25, kPolishRangePer
 constexpr Eigen::Index kSampleAboveFaces = 400000, kSamplePatches = 32, kSamplePatchFaces = 6000;
 constexpr int kSampleMargin = 10;
 
-int prefilter_for(double sigma) {
-  return static_cast<int>(
-      std::lround(std::clamp((sigma - kPrefilterFrom) * kPrefilterSlope, 0.0, double(kPrefilterMax))));
+/// Taubin passes before N⁰ is taken, at noise σ; `smooth` for the class smooth's steeper rule.
+int prefilter_for(double sigma, bool smooth = false) {
+  const double slope = smooth ? kPrefilterSlopeSmooth : kPrefilterSlope;
+  const int most = smooth ? kPrefilterMaxSmooth : kPrefilterMax;
+  return static_cast<int>(std::lround(std::clamp((sigma - kPrefilterFrom) * slope, 0.0, double(most))));
 }
 
 std::string fixed(double x, int digits) {
@@ -169,7 +175,7 @@ DenoiseOptions adaptive_options(const std::string& shape_class, double sigma, do
   if (alpha_max == 0) alpha_max = shape_class == "cad" ? kAlphaMaxCad : kAlphaMaxSmooth;
   alpha_max = std::max(alpha_max, alpha_min);
   o.normals.alpha = sigma > 0 ? std::clamp(kAlphaTimesSigma / sigma, alpha_min, alpha_max) : alpha_max;
-  o.prefilter_iterations = prefilter_for(sigma);
+  o.prefilter_iterations = prefilter_for(sigma, shape_class == "smooth");
   if (shape_class == "smooth")
     o.vertices.omega2 *= std::clamp((sigma - kFairnessFrom) / kFairnessSpan, kFairnessMinShare, 1.0);
   if (shape_class == "cad") {

@@ -146,7 +146,7 @@ TEST(Presets, AdaptiveOptionsFollowTheNoise) {
       EXPECT_GE(o.normals.alpha, 1.5);
       EXPECT_LE(o.normals.alpha, std::string(cls) == "cad" ? 10.0 : 5.0);
       EXPECT_GE(o.prefilter_iterations, 0);
-      EXPECT_LE(o.prefilter_iterations, 5);
+      EXPECT_LE(o.prefilter_iterations, std::string(cls) == "cad" ? 5 : 10);
       // Everything but α, the pre-filter, the closeness weight and (smooth) the fairness weight is
       // the class's preset.
       DenoiseOptions p = preset_options(cls);
@@ -180,6 +180,13 @@ TEST(Presets, AdaptiveOptionsFollowTheNoise) {
     last_prefilter = o.prefilter_iterations;
   }
   EXPECT_EQ(adaptive_options("cad", 0.05).prefilter_iterations, 0);  // low noise: the input's own normals
+  // The class smooth pre-filters more: round(40 (σ − 0.1)) passes, at most 10 (cad: 8 (σ − 0.1), 5).
+  EXPECT_EQ(adaptive_options("smooth", 0.1).prefilter_iterations, 0);
+  EXPECT_EQ(adaptive_options("smooth", 0.2).prefilter_iterations, 4);
+  EXPECT_EQ(adaptive_options("cad", 0.2).prefilter_iterations, 1);
+  EXPECT_EQ(adaptive_options("smooth", 0.3).prefilter_iterations, 8);
+  EXPECT_EQ(adaptive_options("smooth", 0.7).prefilter_iterations, 10);
+  EXPECT_EQ(adaptive_options("cad", 0.7).prefilter_iterations, 5);
   EXPECT_LT(adaptive_options("smooth", 0.1).vertices.omega2, adaptive_options("smooth", 0.5).vertices.omega2);
   EXPECT_EQ(adaptive_options("cad", 0.1).vertices.omega2, preset_options("cad").vertices.omega2);
   for (const char* cls : {"cad", "smooth"}) {
