@@ -36,8 +36,8 @@ TEST(EvalCli, FacesTheTruthFoldsAreReportedApart) {
 
   const test::CliRun j = test::run_cli("eval '" + result + "' --truth '" + truth + "' --json");
   EXPECT_EQ(j.status, 0) << j.out;
-  for (const char* part : {"\"flipped\":1", "\"truth_folded\":1", "\"flipped_outside_folds\":0",
-                           "\"msae_outside_folds_e3\":0"})
+  for (const char* part :
+       {"\"flipped\":1", "\"truth_folded\":1", "\"flipped_outside_folds\":0", "\"msae_outside_folds_e3\":0"})
     EXPECT_NE(j.out.find(part), std::string::npos) << part << " not in " << j.out;
 
   const test::CliRun t = test::run_cli("eval '" + result + "' --truth '" + truth + "'");
