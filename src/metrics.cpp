@@ -18,6 +18,7 @@
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/mesh.h"
+#include "msmesh/topology.h"
 
 namespace msmesh {
 
@@ -106,10 +107,8 @@ class PointGrid {
   std::unordered_map<unsigned long long, std::vector<int>> cells_;
 };
 
-}  // namespace
-
-std::vector<char> truth_folded_faces(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
-  validate_mesh(V, F, "truth");
+/// truth_folded_faces() of a mesh already validated.
+std::vector<char> folded_faces(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   const Eigen::Index nf = F.rows();
   // Unnormalised normals (2 × area × unit normal), summed per vertex: a face's ring is the sum
   // over its corners less itself (three times), in which its edge neighbours count twice.
@@ -120,27 +119,14 @@ std::vector<char> truth_folded_faces(const Eigen::MatrixXd& V, const Eigen::Matr
     C.row(f) = (b - a).cross(c - a).transpose();
     for (int k = 0; k < 3; ++k) at_vertex.row(F(f, k)) += C.row(f);
   }
-  // The edge neighbours: each face's sides by their sorted vertex pair; faces listed next to
-  // each other after sorting share that edge (on a non-manifold edge, each with the next).
-  struct Side {
-    long long key;
-    Eigen::Index face;
-  };
-  std::vector<Side> sides;
-  sides.reserve(static_cast<std::size_t>(3 * nf));
-  const long long nv = V.rows();
-  for (Eigen::Index f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) {
-      const long long a = F(f, k), b = F(f, (k + 1) % 3);
-      sides.push_back({std::min(a, b) * nv + std::max(a, b), f});
-    }
-  std::sort(sides.begin(), sides.end(),
-            [](const Side& x, const Side& y) { return x.key != y.key ? x.key < y.key : x.face < y.face; });
+  // The edge neighbours (on a non-manifold edge, the first two faces).
+  const Topology t = build_topology(F, V.rows());
   Eigen::MatrixXd across = Eigen::MatrixXd::Zero(nf, 3);
-  for (std::size_t i = 0; i + 1 < sides.size(); ++i) {
-    if (sides[i].key != sides[i + 1].key || sides[i].face == sides[i + 1].face) continue;
-    across.row(sides[i].face) += C.row(sides[i + 1].face);
-    across.row(sides[i + 1].face) += C.row(sides[i].face);
+  for (Eigen::Index e = 0; e < t.num_edges(); ++e) {
+    const int f = t.edge_faces(e, 0), g = t.edge_faces(e, 1);
+    if (f < 0 || g < 0) continue;
+    across.row(f) += C.row(g);
+    across.row(g) += C.row(f);
   }
   std::vector<char> folded(static_cast<std::size_t>(nf), 0);
   for (Eigen::Index f = 0; f < nf; ++f) {
@@ -149,6 +135,13 @@ std::vector<char> truth_folded_faces(const Eigen::MatrixXd& V, const Eigen::Matr
     folded[static_cast<std::size_t>(f)] = C.row(f).dot(ring) < 0 && C.row(f).dot(across.row(f)) < 0;
   }
   return folded;
+}
+
+}  // namespace
+
+std::vector<char> truth_folded_faces(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
+  validate_mesh(V, F, "truth");
+  return folded_faces(V, F);
 }
 
 NormalErrors normal_errors(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& V_truth,
@@ -172,7 +165,7 @@ NormalErrors normal_errors(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, c
 
   const Eigen::MatrixXd N = face_normals(V, F);
   const Eigen::MatrixXd Nt = face_normals(V_truth, F_truth);
-  const std::vector<char> folded = truth_folded_faces(V_truth, F_truth);
+  const std::vector<char> folded = folded_faces(V_truth, F_truth);
   NormalErrors e;
   e.angle_rad.resize(F.rows());
   double sum = 0, sum2 = 0, sum2_outside = 0;

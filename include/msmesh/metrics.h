@@ -24,7 +24,8 @@ struct NormalErrors {
 /// their edge neighbours (n_f · Σ A_g n_g < 0) and those of every face sharing a vertex with
 /// them (edge neighbours counted twice): turned over against what lies around them, not only
 /// across one edge, as a face at a sharp crease or a corner of a CAD part can be. A face
-/// without neighbours or with zero area is not folded; on a tetrahedron every face is.
+/// without neighbours or with zero area is not folded; on a tetrahedron every face is. Across a
+/// non-manifold edge only its first two faces count as edge neighbours (Topology::edge_faces).
 /// Throws InvalidInput for an invalid mesh.
 std::vector<char> truth_folded_faces(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F);
 

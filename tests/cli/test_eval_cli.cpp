@@ -1,9 +1,6 @@
 // `msmesh eval`: the error figures of a result against a ground truth, as text and JSON.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
-#include <filesystem>
-#include <random>
 #include <string>
 #include <utility>
 
@@ -11,23 +8,10 @@
 #include "msmesh/io.h"
 
 using namespace msmesh;
-namespace fs = std::filesystem;
-
-namespace {
-
-fs::path temp_folder() {
-  std::random_device rd;
-  fs::path p =
-      fs::temp_directory_path() / ("msmesh_test_eval_" + std::to_string(::getpid()) + "_" + std::to_string(rd()));
-  fs::create_directories(p);
-  return p;
-}
-
-}  // namespace
 
 TEST(EvalCli, FacesTheTruthFoldsAreReportedApart) {
-  const fs::path dir = temp_folder();
-  const std::string result = (dir / "result.obj").string(), truth = (dir / "truth.obj").string();
+  const test::TempDir dir;
+  const std::string result = dir.file("result.obj"), truth = dir.file("truth.obj");
   const Mesh flat = test::grid(4);
   Mesh folded = flat;
   std::swap(folded.F(5, 1), folded.F(5, 2));  // the truth turns one face over
@@ -50,5 +34,4 @@ TEST(EvalCli, FacesTheTruthFoldsAreReportedApart) {
   const test::CliRun same = test::run_cli("eval '" + result + "' --truth '" + result + "'");
   EXPECT_EQ(same.status, 0) << same.out;
   EXPECT_EQ(same.out.find("folds"), std::string::npos) << same.out;
-  fs::remove_all(dir);
 }
