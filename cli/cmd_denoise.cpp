@@ -153,6 +153,8 @@ void run(const Args& a) {
         .add("threads", threads());
     j.add("normal_iterations", r.normal_report.iterations).add("vertex_iterations", r.vertex_report.iterations);
     j.add("despiked_vertices", static_cast<long long>(r.despiked_vertices));
+    j.add("planar_regions", static_cast<long long>(r.planar_regions))
+        .add("planar_faces", static_cast<long long>(r.planar_faces));
     j.add("n_step_cg_sweeps", r.normal_report.n_solver_iterations)
         .add("v_step_cg_sweeps", r.vertex_report.solver_iterations);
     j.add("residual_history", r.normal_report.residual_history);
@@ -192,6 +194,9 @@ void run(const Args& a) {
   if (o.method != DenoiseMethod::Bilateral) {
     if (o.despike_threshold > 0)
       std::cout << "  spikes:           " << r.despiked_vertices << " vertices moved onto the low-pass surface\n";
+    if (r.planar_regions > 0)
+      std::cout << "  planar regions:   " << r.planar_regions << " (" << r.planar_faces
+                << " faces) snapped to their fitted planes\n";
     std::cout << "  normal filtering: " << r.normal_report.iterations << " iterations, " << fmt(r.seconds_normals, 3)
               << " s, residual |p - grad N| "
               << fmt(r.normal_report.residual_history.empty() ? 0.0 : r.normal_report.residual_history.back()) << "\n";

@@ -16,6 +16,7 @@
 #include "msmesh/prepared_mesh.h"
 #include "msmesh/taubin.h"
 #include "msmesh/topology.h"
+#include "planar_regions.h"
 #include "sub_mesh.h"
 #include "union_find.h"
 
@@ -92,6 +93,7 @@ void DenoiseOptions::validate() const {
     vertices.validate();
     check_parameter(find_parameter(denoise_parameters(), "prefilter")->info, prefilter_iterations);
     check_parameter(find_parameter(denoise_parameters(), "despike")->info, despike_threshold);
+    check_parameter(find_parameter(denoise_parameters(), "planes")->info, plane_min_faces);
   }
 }
 
@@ -139,6 +141,8 @@ DenoiseResult denoise_components(const Eigen::MatrixXd& V, const Eigen::MatrixXi
     r.seconds_normals += rc.seconds_normals;
     r.seconds_vertices += rc.seconds_vertices;
     r.despiked_vertices += rc.despiked_vertices;
+    r.planar_regions += rc.planar_regions;
+    r.planar_faces += rc.planar_faces;
   }
   return r;
 }
@@ -186,6 +190,9 @@ DenoiseResult denoise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
   }
   NormalFilterResult nr = filter_normals(mesh, no, {}, progress, normals0);
   r.normals = std::move(nr.normals);
+  const detail::PlanarRegions planes = detail::snap_planar_regions(mesh, r.normals, o.plane_min_faces);
+  r.planar_regions = planes.regions;
+  r.planar_faces = planes.faces;
   r.v = std::move(nr.v);
   r.edges = std::move(nr.edges);
   r.normal_report = std::move(static_cast<NormalFilterStats&>(nr));

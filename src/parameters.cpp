@@ -275,6 +275,11 @@ const ParameterTable<DenoiseOptions>& denoise_parameters() {
                            "anything else (impulsive outliers; 0: off, as the paper)",
                            kNormals),
                       &O::despike_threshold));
+    t.push_back(field(integer("planes", "", closed(0, 2147483647),
+                              "smallest flat region, in faces, whose filtered normals are replaced by its fitted "
+                              "plane's (neighbours within 1°, all within 4° of their mean; 0: off, as the paper)",
+                              kNormals),
+                      &O::plane_min_faces));
     t.push_back(shared_solver_tolerance<O>());
     return t;
   }();

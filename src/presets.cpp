@@ -157,6 +157,7 @@ DenoiseOptions preset_options(const std::string& name) {
     o.vertices.tolerance = 1e-6;
     o.vertices.acceleration = 0;                                      // Algorithm 2's plain alternation
     o.normals.polish = 0;                                             // Algorithm 1's normals as they come
+    o.plane_min_faces = 0;                                            // and no planar regions
     o.normals.solver_tolerance = o.vertices.solver_tolerance = 1e-8;  // exact solves, as the paper's
     return o;
   }

@@ -35,6 +35,13 @@ struct DenoiseOptions {
   /// (the first normals and the closeness of the vertex update). 0: off, as in the paper. Preset
   /// "auto" turns it on when the noise estimate finds many outliers (presets.h).
   double despike_threshold = 0;
+  /// Planar regions (NMSTV/MSTV): after the normal filter, every connected region of at least
+  /// this many faces whose filtered normals agree (neighbours within 1°, all within 4° of their
+  /// mean) takes the normal of the least-squares plane through its input vertices, as the
+  /// vertex update's target: the noise averaged over the whole flat part rather than over the
+  /// plateaus Algorithm 1 leaves in it (docs/presets.md, "Planar regions"). 0: off, as the paper
+  /// (preset "paper").
+  int plane_min_faces = 100;
   void validate() const;
 };
 
@@ -47,6 +54,8 @@ struct DenoiseResult {
   VertexUpdateStats vertex_report;  ///< iterations and histories
   double seconds_normals = 0, seconds_vertices = 0;
   Eigen::Index despiked_vertices = 0;  ///< vertices moved by DenoiseOptions::despike_threshold
+  Eigen::Index planar_regions = 0;     ///< regions snapped to a plane (DenoiseOptions::plane_min_faces)
+  Eigen::Index planar_faces = 0;       ///< faces in them
 };
 
 /// A lower estimate of the peak memory (bytes) denoise() needs for a mesh of this size,

@@ -36,6 +36,8 @@ py::dict denoise_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, con
   d["seconds_normals"] = r.seconds_normals;
   d["seconds_vertices"] = r.seconds_vertices;
   d["despiked_vertices"] = static_cast<long long>(r.despiked_vertices);
+  d["planar_regions"] = static_cast<long long>(r.planar_regions);
+  d["planar_faces"] = static_cast<long long>(r.planar_faces);
   return d;
 }
 

@@ -129,3 +129,27 @@ TEST(AwkwardMeshesCli, SingleTriangle) {
   const auto info = run_cli("info " + d.file("one.off"));
   EXPECT_EQ(info.status, 0) << info.out;
 }
+
+TEST(DenoiseCli, PlanarRegionsAreReportedAndCanBeSwitchedOff) {
+  // A noisy cube's sides are planar regions of the filtered normals (--planes 100, the default):
+  // the JSON and the summary say how many were snapped; --planes 0 and preset paper snap none.
+  const TempDir d;
+  const std::string clean = d.file("cube.obj"), noisy = d.file("noisy.obj"), out = d.file("out.obj");
+  ASSERT_EQ(run_cli("shape cube --resolution 12 -q -o " + clean).status, 0);
+  ASSERT_EQ(run_cli("noise " + clean + " -o " + noisy + " --sigma 0.2 --seed 3 -q").status, 0);
+  const auto on = run_cli("denoise " + noisy + " -o " + out + " --json");
+  ASSERT_EQ(on.status, 0) << on.out;
+  EXPECT_EQ(on.out.find("\"planar_regions\":0,"), std::string::npos) << on.out;
+  EXPECT_NE(on.out.find("\"planar_regions\":"), std::string::npos) << on.out;
+  const auto summary = run_cli("denoise " + noisy + " -o " + out);
+  ASSERT_EQ(summary.status, 0) << summary.out;
+  EXPECT_NE(summary.out.find("planar regions:"), std::string::npos) << summary.out;
+  for (const std::string extra : {"--planes 0", "--preset paper"}) {
+    const auto off = run_cli("denoise " + noisy + " -o " + out + " --json " + extra);
+    ASSERT_EQ(off.status, 0) << off.out;
+    EXPECT_NE(off.out.find("\"planar_regions\":0,\"planar_faces\":0"), std::string::npos) << extra << ": " << off.out;
+  }
+  const auto bad = run_cli("denoise " + noisy + " -o " + out + " --planes -1");
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.out.find("planes"), std::string::npos) << bad.out;
+}
