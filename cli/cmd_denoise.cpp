@@ -135,7 +135,10 @@ void run(const Args& a) {
           .add("noise_level_used", preset.sigma)
           .add("noise_detail_as_noise", preset.detail_as_noise)
           .add("noise_despiked", preset.despiked)
-          .add("noise_sigma_rms_despiked", preset.noise_despiked.sigma_rms);
+          .add("noise_sigma_rms_despiked", preset.noise_despiked.sigma_rms)
+          .add("auto_quadric_excess", preset.quadric_excess)
+          .add("auto_featureless_limit", preset.featureless_limit)
+          .add("auto_featureless", preset.featureless);
     j.add("strength", preset.strength);
     j.add("vertices", static_cast<long long>(mesh.V.rows())).add("faces", static_cast<long long>(mesh.F.rows()));
     j.add("dropped_degenerate_faces", static_cast<long long>(notes.dropped_degenerate));

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "bilateral_pairs.h"
+#include "featureless.h"
 #include "low_pass_residuals.h"
 #include "masked_measures.h"
 #include "msmesh/bilateral.h"
@@ -102,6 +103,16 @@ constexpr double kDespikeFromOutliers = 0.03, kDespikeFromSigmaRms = 0.2, kDespi
 //   curved part does not (docs/presets.md, "The polish"; at σ 0.05 the full polish lost on CAD
 //   parts with seeded noise, up to 1.36x, and on the dragon, which auto classes cad, 1.21x).
 constexpr double kPolishFullSigma = 0.2, kPolishMinShare = 0.25, kPolishRangePerSigma = 1.5, kPolishRangeMin = 0.15;
+
+// Featureless smooth surfaces (docs/presets.md, "Featureless smooth surfaces"): a mesh the
+// shape rule classes smooth, not despiked, whose quadric ring excess (featureless.h) is below
+// clamp(kFeaturelessPerSigma2 / σ_rms², kFeaturelessMin, kFeaturelessMax) — about half the least
+// that the organic meshes of ../shared read at that noise (0.24 at σ 0.11, 0.083 at 0.2, 0.051
+// at 0.3 and above), and more than spheres and tori read (0.04 at most) — is denoised as class
+// cad with a strong polish: on such a surface the class smooth's early-stopped TV flow leaves
+// most of the noise, and the polish's screened smoothing of the normals is the better filter.
+constexpr double kFeaturelessPerSigma2 = 0.0016, kFeaturelessMin = 0.03, kFeaturelessMax = 0.3;
+constexpr double kFeaturelessPolish = 100.0, kFeaturelessPolishRange = 1.0;
 
 // Meshes above kSampleAboveFaces faces are measured on kSamplePatches patches of
 // kSamplePatchFaces faces, away from the cuts by kSampleMargin rings (about as far as the
@@ -271,9 +282,13 @@ std::string ResolvedPreset::reason() const {
       scan_like  ? " (at most " + fixed(kAlphaMaxScanLike, 0) + ": scan-like, few creases and more detail than noise)"
       : despiked ? " (at most " + fixed(kAlphaMaxScanLike, 0) + " after the spike removal)"
                  : "";
+  const std::string quadric = featureless_limit > 0 ? "; quadric ring excess " + fixed(quadric_excess, 3) +
+                                                          (featureless ? " < " : " >= ") + fixed(featureless_limit, 3) +
+                                                          (featureless ? ": featureless, cad" : "")
+                                                    : "";
   return "chosen automatically (" + sampled + noise.summary() + spikes + s + detail + ": alpha " +
          fixed(options.normals.alpha, 2) + cap + ", prefilter " + std::to_string(options.prefilter_iterations) +
-         polish + "; " + choice.reason + ")";
+         polish + "; " + choice.reason + quadric + ")";
 }
 
 ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
@@ -333,6 +348,14 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   r.choice = detail::choose_preset_masked(prefilter > 0 ? taubin_smooth(MV, SF, to) : MV, SF,
                                           sampled ? &sample.core_face : nullptr);
   r.preset = r.choice.preset;
+  if (r.preset == "smooth" && !r.despiked) {
+    const detail::QuadricRingExcess q = detail::quadric_ring_excess(MV, SF);
+    const double s2 = std::max(measured.sigma_rms * measured.sigma_rms, std::numeric_limits<double>::min());
+    r.quadric_excess = q.excess;
+    r.featureless_limit = std::clamp(kFeaturelessPerSigma2 / s2, kFeaturelessMin, kFeaturelessMax);
+    r.featureless = q.samples > 0 && q.excess < r.featureless_limit;
+    if (r.featureless) r.preset = "cad";
+  }
   // The class smooth: the noise without the shape's own detail, and the detail kept (the class
   // was judged on the copy pre-filtered for σ_rms; the options may pre-filter less).
   double detail = 0;
@@ -358,6 +381,10 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   }
   r.options = adaptive_options(r.preset, r.sigma, detail, r.scan_like || r.despiked ? kAlphaMaxScanLike : 0.0);
   if (r.despiked) r.options.despike_threshold = kDespikeThreshold;
+  if (r.featureless) {
+    r.options.normals.polish = kFeaturelessPolish;
+    r.options.normals.polish_range = kFeaturelessPolishRange;
+  }
   return r;
 }
 

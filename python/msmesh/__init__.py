@@ -178,6 +178,9 @@ def _resolve_preset(V, F, preset, report, strength=1.0):
             "noise_sigma_rms_despiked",
         ):
             report[key] = r[key]
+        report["auto_quadric_excess"] = r["quadric_excess"]
+        report["auto_featureless_limit"] = r["featureless_limit"]
+        report["auto_featureless"] = r["featureless"]
     report["strength"] = r["strength"]
     return r["options"]
 

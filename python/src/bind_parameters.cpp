@@ -137,6 +137,9 @@ py::dict resolve_preset_binding(const std::string& name, const Eigen::MatrixXd& 
     d["noise_detail_as_noise"] = r.detail_as_noise;
     d["noise_despiked"] = r.despiked;
     d["noise_sigma_rms_despiked"] = r.noise_despiked.sigma_rms;
+    d["quadric_excess"] = r.quadric_excess;
+    d["featureless_limit"] = r.featureless_limit;
+    d["featureless"] = r.featureless;
   }
   d["strength"] = r.strength;
   return d;

@@ -130,6 +130,28 @@ TEST(AwkwardMeshesCli, SingleTriangle) {
   EXPECT_EQ(info.status, 0) << info.out;
 }
 
+TEST(DenoiseCli, AFeaturelessSurfaceIsReported) {
+  // A noisy torus has no detail and no creases: auto calls it featureless (class cad with the
+  // strong polish) and says so in the JSON and the summary; a cube's creases are not.
+  const TempDir d;
+  const std::string torus = d.file("torus.obj"), cube = d.file("cube.obj"), noisy = d.file("noisy.obj"),
+                    out = d.file("out.obj");
+  ASSERT_EQ(run_cli("shape torus --resolution 16 -q -o " + torus).status, 0);
+  ASSERT_EQ(run_cli("noise " + torus + " -o " + noisy + " --sigma 0.1 --seed 3 -q").status, 0);
+  const auto json = run_cli("denoise " + noisy + " -o " + out + " --json");
+  ASSERT_EQ(json.status, 0) << json.out;
+  EXPECT_NE(json.out.find("\"auto_featureless\":true"), std::string::npos) << json.out;
+  EXPECT_NE(json.out.find("\"preset\":\"cad\""), std::string::npos) << json.out;
+  const auto summary = run_cli("denoise " + noisy + " -o " + out);
+  ASSERT_EQ(summary.status, 0) << summary.out;
+  EXPECT_NE(summary.out.find("featureless"), std::string::npos) << summary.out;
+  ASSERT_EQ(run_cli("shape cube --resolution 12 -q -o " + cube).status, 0);
+  ASSERT_EQ(run_cli("noise " + cube + " -o " + noisy + " --sigma 0.1 --seed 3 -q").status, 0);
+  const auto creases = run_cli("denoise " + noisy + " -o " + out + " --json");
+  ASSERT_EQ(creases.status, 0) << creases.out;
+  EXPECT_NE(creases.out.find("\"auto_featureless\":false"), std::string::npos) << creases.out;
+}
+
 TEST(DenoiseCli, PlanarRegionsAreReportedAndCanBeSwitchedOff) {
   // A noisy cube's sides are planar regions of the filtered normals (--planes 100, the default):
   // the JSON and the summary say how many were snapped; --planes 0 and preset paper snap none.
