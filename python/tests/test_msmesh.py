@@ -110,6 +110,18 @@ def test_noise_estimate_and_strength(noisy_fandisk):
     np.testing.assert_array_equal(msmesh.taubin_smooth(V, F, iterations=0), V)
 
 
+def test_a_featureless_surface_is_reported():
+    V, F = msmesh.make_shape("torus", 16)
+    noisy = msmesh.add_noise(V, F, sigma=0.1, seed=3)
+    _, r = msmesh.denoise(noisy, F)
+    assert r["auto_featureless"] is True and r["preset"] == "cad", r["preset_reason"]
+    assert r["auto_quadric_excess"] < r["auto_featureless_limit"]
+    assert "featureless" in r["preset_reason"]
+    C, G = msmesh.make_shape("cube", 12)
+    _, c = msmesh.denoise(msmesh.add_noise(C, G, sigma=0.1, seed=3), G)
+    assert c["auto_featureless"] is False
+
+
 def test_correlated_noise_reads_scan_like(tmp_path):
     V, F = msmesh.make_shape("pyramid", 24)
     white = msmesh.add_noise(V, F, sigma=0.2, seed=11)
