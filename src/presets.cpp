@@ -113,6 +113,11 @@ constexpr double kPolishFullSigma = 0.2, kPolishMinShare = 0.25, kPolishRangePer
 // most of the noise, and the polish's screened smoothing of the normals is the better filter.
 constexpr double kFeaturelessPerSigma2 = 0.0016, kFeaturelessMin = 0.03, kFeaturelessMax = 0.3;
 constexpr double kFeaturelessPolish = 100.0, kFeaturelessPolishRange = 1.0;
+//   Its vertex update: the class cad's closeness ω₃ without the low-noise gain (which keeps
+//   detail, and there is none) and fairness ω₂ = kFeaturelessFairness (the procedural sphere and
+//   torus, σ 0.05–0.3, 16 cases: 0.214 → 0.077; ω₂ 0.3, 1, 10, 30: 0.138, 0.111, 0.065, 0.098,
+//   30 bending the coarse sphere; the cubesphere loses a little at σ 0.05, 0.14 → 0.16).
+constexpr double kFeaturelessFairness = 3.0;
 
 // Meshes above kSampleAboveFaces faces are measured on kSamplePatches patches of
 // kSamplePatchFaces faces, away from the cuts by kSampleMargin rings (about as far as the
@@ -384,6 +389,8 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   if (r.featureless) {
     r.options.normals.polish = kFeaturelessPolish;
     r.options.normals.polish_range = kFeaturelessPolishRange;
+    r.options.vertices.omega3 = preset_options("cad").vertices.omega3;
+    r.options.vertices.omega2 = kFeaturelessFairness;
   }
   return r;
 }

@@ -97,6 +97,8 @@ TEST(InternalFeatureless, AutoDenoisesANoisyTorusAsFeatureless) {
   ASSERT_TRUE(r.featureless) << r.reason();
   EXPECT_EQ(r.preset, "cad");
   EXPECT_EQ(r.options.normals.polish, 100.0);
+  EXPECT_EQ(r.options.vertices.omega2, 3.0);
+  EXPECT_EQ(r.options.vertices.omega3, preset_options("cad").vertices.omega3);
   EXPECT_NE(r.reason().find("featureless"), std::string::npos) << r.reason();
   // The class smooth for the same noise, as before the test: far more error left.
   const DenoiseResult featureless = denoise(V, torus.F, r.options);
