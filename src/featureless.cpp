@@ -6,6 +6,8 @@
 #include <cmath>
 #include <vector>
 
+#include "msmesh/geometry.h"
+
 namespace msmesh::detail {
 
 namespace {
@@ -67,14 +69,11 @@ QuadricRingExcess quadric_ring_excess(const Eigen::MatrixXd& V, const Eigen::Mat
   if (nv == 0 || F.rows() == 0 || max_samples <= 0) return out;
   const VertexRings rings = vertex_rings(F, nv);
   // Distances are measured in the mean edge length, so the fits are well scaled at any size.
-  double edge_sum = 0;
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) edge_sum += (V.row(F(f, k)) - V.row(F(f, (k + 1) % 3))).norm();
-  const double h = edge_sum / static_cast<double>(3 * F.rows());
+  const double h = mean_edge_length(V, F);
   if (!(h > 0)) return out;
 
   const Eigen::Index stride = std::max<Eigen::Index>(1, nv / max_samples);
-  std::vector<int> mark(static_cast<size_t>(nv), -1), ring, next;
+  std::vector<int> mark(static_cast<size_t>(nv), -1), ring;
   double ss2 = 0, ss3 = 0, dof2 = 0, dof3 = 0;
   for (Eigen::Index s = 0; s < nv; s += stride) {
     const int seed = static_cast<int>(s);

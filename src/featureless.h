@@ -17,8 +17,8 @@ struct QuadricRingExcess {
   Eigen::Index samples = 0;   ///< vertices whose two fits were counted
 };
 
-/// Samples at most `max_samples` vertices evenly by index (vertices with fewer than
-/// kMinRingVertices in their 2-ring are skipped). Deterministic.
+/// Samples every ⌊#V / max_samples⌋-th vertex (so between max_samples and twice as many, or every
+/// vertex; vertices with fewer than kMinRingVertices in their 2-ring are skipped). Deterministic.
 QuadricRingExcess quadric_ring_excess(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
                                       Eigen::Index max_samples = 2000);
 

@@ -26,18 +26,11 @@ Eigen::MatrixXd noisy(const Mesh& m, double sigma, unsigned seed) {
   return add_noise(m.V, m.F, no);
 }
 
-double mean_edge(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
-  double s = 0;
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) s += (V.row(F(f, k)) - V.row(F(f, (k + 1) % 3))).norm();
-  return s / static_cast<double>(3 * F.rows());
-}
-
 // The torus with bumps eight edges wide (`amplitude_edges` high) along its vertex normals: detail, as on a statue.
 Mesh bumpy(const Mesh& m, double amplitude_edges) {
   Mesh b = m;
   const Eigen::MatrixXd N = vertex_normals(m.V, m.F);
-  const double h = mean_edge(m.V, m.F), k = 2 * M_PI / (8 * h);
+  const double h = mean_edge_length(m.V, m.F), k = 2 * M_PI / (8 * h);
   for (Eigen::Index i = 0; i < m.V.rows(); ++i) {
     const Eigen::RowVector3d p = m.V.row(i);
     b.V.row(i) += amplitude_edges * h * std::sin(k * p.x()) * std::sin(k * p.y()) * std::sin(k * p.z()) * N.row(i);
@@ -58,7 +51,7 @@ TEST(InternalFeatureless, WhiteNoiseOnASmoothSurfaceHasNoExcess) {
       EXPECT_GT(q.samples, 1000);
       EXPECT_LT(std::abs(q.excess), 0.08) << "sigma " << sigma;
       // The two-ring residual is the noise along the normals (σ in mean edge lengths).
-      EXPECT_NEAR(q.sigma_two_ring / mean_edge(m.V, m.F), sigma, 0.1 * sigma + 0.005) << "sigma " << sigma;
+      EXPECT_NEAR(q.sigma_two_ring / mean_edge_length(m.V, m.F), sigma, 0.1 * sigma + 0.005) << "sigma " << sigma;
     }
   }
 }
