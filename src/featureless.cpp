@@ -107,7 +107,10 @@ QuadricRingExcess quadric_ring_excess(const Eigen::MatrixXd& V, const Eigen::Mat
     dof3 += static_cast<double>(ring.size()) - kQuadricTerms;
     ++out.samples;
   }
-  if (out.samples == 0 || !(ss2 > 0)) return out;
+  if (!(ss2 > 0)) {  // every 2-ring exactly a quadric (no noise at all): nothing to compare
+    out.samples = 0;
+    return out;
+  }
   out.excess = (ss3 / dof3) / (ss2 / dof2) - 1.0;
   out.sigma_two_ring = std::sqrt(ss2 / dof2) * h;
   return out;

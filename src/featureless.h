@@ -14,7 +14,7 @@ namespace msmesh::detail {
 struct QuadricRingExcess {
   double excess = 0;          ///< the ratio above minus 1 (0 when nothing was measured)
   double sigma_two_ring = 0;  ///< √(Σ r₂² / Σ (m₂ − 6)), in the mesh's units
-  Eigen::Index samples = 0;   ///< vertices whose two fits were counted
+  Eigen::Index samples = 0;   ///< vertices whose two fits were counted (0 also when no 2-ring left a residual)
 };
 
 /// Samples every ⌊#V / max_samples⌋-th vertex (so between max_samples and twice as many, or every

@@ -81,6 +81,16 @@ TEST(InternalFeatureless, NothingToMeasure) {
   const detail::QuadricRingExcess q = detail::quadric_ring_excess(Eigen::MatrixXd(0, 3), Eigen::MatrixXi(0, 3));
   EXPECT_EQ(q.samples, 0);
   EXPECT_EQ(q.excess, 0);
+  // A cube pressed flat (every vertex in the plane z = 0), without noise: every fit is exact, so
+  // there is nothing to compare (and auto does not call it featureless on that ground).
+  Mesh plane = make_cube(8);
+  plane.V.col(2).setZero();
+  const detail::QuadricRingExcess flat = detail::quadric_ring_excess(plane.V, plane.F);
+  EXPECT_EQ(flat.samples, 0);
+  // Too few neighbours anywhere (a single triangle): nothing measured either.
+  const Eigen::MatrixXd T = (Eigen::MatrixXd(3, 3) << 0, 0, 0, 1, 0, 0, 0, 1, 0).finished();
+  const Eigen::MatrixXi G = (Eigen::MatrixXi(1, 3) << 0, 1, 2).finished();
+  EXPECT_EQ(detail::quadric_ring_excess(T, G).samples, 0);
 }
 
 TEST(InternalFeatureless, AutoDenoisesANoisyTorusAsFeatureless) {
