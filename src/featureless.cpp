@@ -7,37 +7,13 @@
 #include <vector>
 
 #include "msmesh/geometry.h"
+#include "vertex_neighbours.h"
 
 namespace msmesh::detail {
 
 namespace {
 
 constexpr int kQuadricTerms = 6;  // 1, u, v, u², uv, v²
-
-// Vertex neighbours (sharing an edge) as compressed rows: those of i are nbr[start[i] .. start[i+1]).
-struct VertexRings {
-  std::vector<int> start, nbr;
-};
-
-VertexRings vertex_rings(const Eigen::MatrixXi& F, Eigen::Index nv) {
-  std::vector<std::pair<int, int>> pairs;
-  pairs.reserve(static_cast<size_t>(F.rows()) * 6);
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int a = F(f, k), b = F(f, (k + 1) % 3);
-      pairs.emplace_back(a, b);
-      pairs.emplace_back(b, a);
-    }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  VertexRings r;
-  r.start.assign(static_cast<size_t>(nv) + 1, 0);
-  for (const auto& p : pairs) ++r.start[static_cast<size_t>(p.first) + 1];
-  for (Eigen::Index i = 0; i < nv; ++i) r.start[i + 1] += r.start[i];
-  r.nbr.reserve(pairs.size());
-  for (const auto& p : pairs) r.nbr.push_back(p.second);
-  return r;
-}
 
 // The sum of squared residuals of the least-squares quadric height field through the points P
 // (rows), in the frame of their principal axes (height along the least one); false when the
@@ -67,7 +43,7 @@ QuadricRingExcess quadric_ring_excess(const Eigen::MatrixXd& V, const Eigen::Mat
   QuadricRingExcess out;
   const Eigen::Index nv = V.rows();
   if (nv == 0 || F.rows() == 0 || max_samples <= 0) return out;
-  const VertexRings rings = vertex_rings(F, nv);
+  const VertexNeighbours neighbours(F, nv);
   // Distances are measured in the mean edge length, so the fits are well scaled at any size.
   const double h = mean_edge_length(V, F);
   if (!(h > 0)) return out;
@@ -77,7 +53,7 @@ QuadricRingExcess quadric_ring_excess(const Eigen::MatrixXd& V, const Eigen::Mat
   double ss2 = 0, ss3 = 0, dof2 = 0, dof3 = 0;
   for (Eigen::Index s = 0; s < nv; s += stride) {
     const int seed = static_cast<int>(s);
-    if (rings.start[seed] == rings.start[seed + 1]) continue;  // unreferenced
+    if (neighbours.count[static_cast<size_t>(seed)] == 0) continue;  // unreferenced
     // Breadth-first rings 1, 2, 3 around the seed; `mark` holds the seed for those reached.
     ring.assign(1, seed);
     mark[seed] = seed;
@@ -86,8 +62,8 @@ QuadricRingExcess quadric_ring_excess(const Eigen::MatrixXd& V, const Eigen::Mat
     for (int depth = 1; depth <= 3; ++depth) {
       const size_t to = ring.size();
       for (size_t q = from; q < to; ++q)
-        for (int e = rings.start[ring[q]]; e < rings.start[ring[q] + 1]; ++e) {
-          const int j = rings.nbr[e];
+        for (const int* n = neighbours.begin(ring[q]); n != neighbours.end(ring[q]); ++n) {
+          const int j = *n;
           if (mark[j] != seed) {
             mark[j] = seed;
             ring.push_back(j);

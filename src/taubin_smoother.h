@@ -2,9 +2,9 @@
 // smooth the same mesh more than once (the noise estimate's light and full low passes).
 #pragma once
 #include <Eigen/Core>
-#include <vector>
 
 #include "msmesh/taubin.h"
+#include "vertex_neighbours.h"
 
 namespace msmesh::detail {
 
@@ -18,7 +18,7 @@ class TaubinSmoother {
   Eigen::MatrixXd apply(const Eigen::MatrixXd& X, const TaubinOptions& options) const;
 
  private:
-  std::vector<int> start_, nbr_, count_;
+  VertexNeighbours neighbours_;
 };
 
 }  // namespace msmesh::detail

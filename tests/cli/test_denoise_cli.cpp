@@ -17,6 +17,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// Writes `msmesh shape SHAPE` (e.g. "cube --resolution 12") to `clean` and its seeded noise
+/// (`msmesh noise ... NOISE`, e.g. "--sigma 0.1 --seed 3") to `noisy`.
+void noisy_shape(const std::string& shape, const std::string& noise, const std::string& clean,
+                 const std::string& noisy) {
+  const auto made = run_cli("shape " + shape + " -q -o " + clean);
+  ASSERT_EQ(made.status, 0) << made.out;
+  const auto noised = run_cli("noise " + clean + " -o " + noisy + " " + noise + " -q");
+  ASSERT_EQ(noised.status, 0) << noised.out;
+}
+
 /// Runs `msmesh denoise in -o out` and checks success, then reads the result back.
 Mesh cli_denoise_ok(const TempDir& d, const Mesh& m, const std::string& in_name, const std::string& out_name,
                     const std::string& extra = "") {
@@ -136,8 +146,7 @@ TEST(DenoiseCli, AFeaturelessSurfaceIsReported) {
   const TempDir d;
   const std::string torus = d.file("torus.obj"), cube = d.file("cube.obj"), noisy = d.file("noisy.obj"),
                     out = d.file("out.obj");
-  ASSERT_EQ(run_cli("shape torus --resolution 16 -q -o " + torus).status, 0);
-  ASSERT_EQ(run_cli("noise " + torus + " -o " + noisy + " --sigma 0.1 --seed 3 -q").status, 0);
+  ASSERT_NO_FATAL_FAILURE(noisy_shape("torus --resolution 16", "--sigma 0.1 --seed 3", torus, noisy));
   const auto json = run_cli("denoise " + noisy + " -o " + out + " --json");
   ASSERT_EQ(json.status, 0) << json.out;
   EXPECT_NE(json.out.find("\"auto_featureless\":true"), std::string::npos) << json.out;
@@ -145,8 +154,7 @@ TEST(DenoiseCli, AFeaturelessSurfaceIsReported) {
   const auto summary = run_cli("denoise " + noisy + " -o " + out);
   ASSERT_EQ(summary.status, 0) << summary.out;
   EXPECT_NE(summary.out.find("featureless"), std::string::npos) << summary.out;
-  ASSERT_EQ(run_cli("shape cube --resolution 12 -q -o " + cube).status, 0);
-  ASSERT_EQ(run_cli("noise " + cube + " -o " + noisy + " --sigma 0.1 --seed 3 -q").status, 0);
+  ASSERT_NO_FATAL_FAILURE(noisy_shape("cube --resolution 12", "--sigma 0.1 --seed 3", cube, noisy));
   const auto creases = run_cli("denoise " + noisy + " -o " + out + " --json");
   ASSERT_EQ(creases.status, 0) << creases.out;
   EXPECT_NE(creases.out.find("\"auto_featureless\":false"), std::string::npos) << creases.out;
@@ -157,8 +165,7 @@ TEST(DenoiseCli, PlanarRegionsAreReportedAndCanBeSwitchedOff) {
   // the JSON and the summary say how many were snapped; --planes 0 and preset paper snap none.
   const TempDir d;
   const std::string clean = d.file("cube.obj"), noisy = d.file("noisy.obj"), out = d.file("out.obj");
-  ASSERT_EQ(run_cli("shape cube --resolution 12 -q -o " + clean).status, 0);
-  ASSERT_EQ(run_cli("noise " + clean + " -o " + noisy + " --sigma 0.2 --seed 3 -q").status, 0);
+  ASSERT_NO_FATAL_FAILURE(noisy_shape("cube --resolution 12", "--sigma 0.2 --seed 3", clean, noisy));
   const auto on = run_cli("denoise " + noisy + " -o " + out + " --json");
   ASSERT_EQ(on.status, 0) << on.out;
   EXPECT_EQ(on.out.find("\"planar_regions\":0,"), std::string::npos) << on.out;
