@@ -244,6 +244,7 @@ TEST(Presets, AutoIsInvariantUnderScaleRotationAndTranslation) {
   const PresetChoice a = choose_preset(part.V, part.F), b = choose_preset(moved, part.F);
   EXPECT_EQ(a.preset, b.preset);
   EXPECT_NEAR(a.sharp_fraction, b.sharp_fraction, 1e-9);
+  EXPECT_NEAR(a.crease_line_fraction, b.crease_line_fraction, 1e-9);
   EXPECT_NEAR(a.flat_fraction, b.flat_fraction, 1e-9);
 }
 

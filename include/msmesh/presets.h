@@ -43,9 +43,12 @@ DenoiseOptions adaptive_options(const std::string& shape_class, double sigma, do
 struct PresetChoice {
   std::string preset;         ///< "cad" or "smooth"
   double sharp_fraction = 0;  ///< fraction of edge length with dihedral > 30° after pre-smoothing
-  double flat_fraction = 0;   ///< fraction of edge length with dihedral < 1° after pre-smoothing
-  double noise_level = 0;     ///< mean angle (radians) between input and pre-smoothed normals
-  std::string reason;         ///< one line: the figures and the thresholds that decided
+  /// The part of sharp_fraction on lines of creases at least 40 mean edge lengths long: what the
+  /// class rule counts (noise and fine detail make short scattered creases).
+  double crease_line_fraction = 0;
+  double flat_fraction = 0;  ///< fraction of edge length with dihedral < 1° after pre-smoothing
+  double noise_level = 0;    ///< mean angle (radians) between input and pre-smoothed normals
+  std::string reason;        ///< one line: the figures and the thresholds that decided
 };
 
 /// The shape rule: picks the class "cad" or "smooth" for a mesh (#V by 3, #F by 3) from the

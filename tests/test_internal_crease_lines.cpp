@@ -1,0 +1,106 @@
+// Crease lines (src/crease_lines.h) and the shape rule that counts them: a cube's creases are
+// one line network and count whole; short scattered creases (random-direction noise on a
+// sphere) do not; the figure does not depend on the mesh's position, turn or scale.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <vector>
+
+#include "crease_lines.h"
+#include "msmesh/geometry.h"
+#include "msmesh/noise.h"
+#include "msmesh/presets.h"
+#include "msmesh/shapes.h"
+#include "msmesh/topology.h"
+
+using namespace msmesh;
+
+namespace {
+
+// Edges whose two faces' normals differ by more than 30°.
+std::vector<char> sharp_edges(const Mesh& m, const Topology& t) {
+  const Eigen::MatrixXd N = face_normals(m.V, m.F);
+  std::vector<char> crease(static_cast<std::size_t>(t.num_edges()), 0);
+  for (Eigen::Index e = 0; e < t.num_edges(); ++e)
+    if (t.edge_is_interior[e] && N.row(t.edge_faces(e, 0)).dot(N.row(t.edge_faces(e, 1))) < std::cos(M_PI / 6))
+      crease[static_cast<std::size_t>(e)] = 1;
+  return crease;
+}
+
+double total(const Eigen::VectorXd& len, const std::vector<char>& crease) {
+  double s = 0;
+  for (Eigen::Index e = 0; e < len.size(); ++e)
+    if (crease[static_cast<std::size_t>(e)]) s += len(e);
+  return s;
+}
+
+}  // namespace
+
+TEST(CreaseLines, ACubesCreasesAreOneLineAndCountWhole) {
+  const Mesh cube = make_cube(16);
+  const Topology t = build_topology(cube.F, cube.V.rows());
+  const Eigen::VectorXd len = edge_lengths(cube.V, t);
+  const std::vector<char> crease = sharp_edges(cube, t);
+  const double all = total(len, crease), h = len.mean();
+  const double side = cube.V.col(0).maxCoeff() - cube.V.col(0).minCoeff();
+  ASSERT_NEAR(all, 12 * side, 1e-9 * all);  // the twelve edges of the cube
+  EXPECT_DOUBLE_EQ(detail::crease_line_length(t, len, crease, cube.V.rows(), 40 * h), all);
+  EXPECT_DOUBLE_EQ(detail::crease_line_length(t, len, crease, cube.V.rows(), 0.99 * all), all);
+  EXPECT_EQ(detail::crease_line_length(t, len, crease, cube.V.rows(), 1.01 * all), 0.0);
+}
+
+TEST(CreaseLines, OnlyLinesLongEnoughCount) {
+  // Three cube edges meeting at no vertex, and one edge of each alone: the long lines count,
+  // the single edges do not.
+  const Mesh cube = make_cube(16);
+  const Topology t = build_topology(cube.F, cube.V.rows());
+  const Eigen::VectorXd len = edge_lengths(cube.V, t);
+  std::vector<char> crease(static_cast<std::size_t>(t.num_edges()), 0);
+  std::vector<char> used(static_cast<std::size_t>(cube.V.rows()), 0);
+  int singles = 0;
+  for (Eigen::Index e = 0; e < t.num_edges() && singles < 5; ++e) {
+    const int a = t.edges(e, 0), b = t.edges(e, 1);
+    if (used[static_cast<std::size_t>(a)] || used[static_cast<std::size_t>(b)]) continue;
+    // no neighbour of a or b may be used either, so that the single edges stay apart
+    bool apart = true;
+    for (Eigen::Index g = 0; g < t.num_edges() && apart; ++g)
+      for (int k = 0; k < 2; ++k) {
+        const int x = t.edges(g, k), y = t.edges(g, 1 - k);
+        if ((x == a || x == b) && used[static_cast<std::size_t>(y)]) apart = false;
+      }
+    if (!apart) continue;
+    crease[static_cast<std::size_t>(e)] = 1;
+    used[static_cast<std::size_t>(a)] = used[static_cast<std::size_t>(b)] = 1;
+    ++singles;
+  }
+  ASSERT_EQ(singles, 5);
+  const double h = len.mean();
+  EXPECT_NEAR(total(len, crease), 5 * h, 1e-9 + 0.5 * h * 5);
+  EXPECT_EQ(detail::crease_line_length(t, len, crease, cube.V.rows(), 2.5 * h), 0.0);
+  EXPECT_DOUBLE_EQ(detail::crease_line_length(t, len, crease, cube.V.rows(), 0.0), total(len, crease));
+}
+
+TEST(CreaseLines, TheShapeRuleCountsCreasesOnLines) {
+  // The cube: every crease is on a line, so the two fractions agree and the class is cad.
+  const Mesh cube = make_cube(24);
+  const PresetChoice c = choose_preset(cube.V, cube.F);
+  EXPECT_GT(c.sharp_fraction, 0.02);
+  EXPECT_NEAR(c.crease_line_fraction, c.sharp_fraction, 1e-12);
+  EXPECT_EQ(c.preset, "cad") << c.reason;
+  EXPECT_NE(c.reason.find("on lines of 40 edges or more"), std::string::npos) << c.reason;
+  // A sphere under heavy random-direction noise: creases, but short and scattered.
+  const Mesh sphere = make_sphere(5);
+  NoiseOptions no;
+  no.sigma = 0.5;
+  no.direction = NoiseDirection::Random;
+  no.seed = 11;
+  const Eigen::MatrixXd noisy = add_noise(sphere.V, sphere.F, no);
+  const PresetChoice s = choose_preset(noisy, sphere.F);
+  EXPECT_GT(s.sharp_fraction, 0.01) << s.reason;
+  EXPECT_LT(s.crease_line_fraction, 0.2 * s.sharp_fraction) << s.reason;
+  // Invariant under turn, scale and translation.
+  Eigen::Matrix3d R;
+  R = Eigen::AngleAxisd(0.4, Eigen::Vector3d(3, -1, 2).normalized());
+  const Eigen::MatrixXd moved = ((noisy * R.transpose()) * 250.0).rowwise() + Eigen::RowVector3d(-3, 8, 1);
+  EXPECT_NEAR(choose_preset(moved, sphere.F).crease_line_fraction, s.crease_line_fraction, 1e-9);
+}
