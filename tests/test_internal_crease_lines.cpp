@@ -50,34 +50,45 @@ TEST(CreaseLines, ACubesCreasesAreOneLineAndCountWhole) {
 }
 
 TEST(CreaseLines, OnlyLinesLongEnoughCount) {
-  // Three cube edges meeting at no vertex, and one edge of each alone: the long lines count,
-  // the single edges do not.
+  // One edge of the cube (16 segments in a line) and five single edges apart from it and from
+  // each other: the line counts whole up to its own length, the single edges never.
   const Mesh cube = make_cube(16);
   const Topology t = build_topology(cube.F, cube.V.rows());
   const Eigen::VectorXd len = edge_lengths(cube.V, t);
+  const double lo_x = cube.V.col(0).minCoeff(), lo_y = cube.V.col(1).minCoeff();
+  const double side = cube.V.col(0).maxCoeff() - lo_x;
+  auto on_line = [&](int i) { return cube.V(i, 0) == lo_x && cube.V(i, 1) == lo_y; };
   std::vector<char> crease(static_cast<std::size_t>(t.num_edges()), 0);
-  std::vector<char> used(static_cast<std::size_t>(cube.V.rows()), 0);
+  std::vector<char> taken(static_cast<std::size_t>(cube.V.rows()), 0);  // vertices of marked edges and their neighbours
+  auto take = [&](int i) {
+    taken[static_cast<std::size_t>(i)] = 1;
+    for (Eigen::Index g = 0; g < t.num_edges(); ++g)
+      for (int k = 0; k < 2; ++k)
+        if (t.edges(g, k) == i) taken[static_cast<std::size_t>(t.edges(g, 1 - k))] = 1;
+  };
+  for (Eigen::Index e = 0; e < t.num_edges(); ++e)
+    if (on_line(t.edges(e, 0)) && on_line(t.edges(e, 1))) crease[static_cast<std::size_t>(e)] = 1;
+  for (Eigen::Index e = 0; e < t.num_edges(); ++e)
+    if (crease[static_cast<std::size_t>(e)]) {
+      take(t.edges(e, 0));
+      take(t.edges(e, 1));
+    }
   int singles = 0;
   for (Eigen::Index e = 0; e < t.num_edges() && singles < 5; ++e) {
     const int a = t.edges(e, 0), b = t.edges(e, 1);
-    if (used[static_cast<std::size_t>(a)] || used[static_cast<std::size_t>(b)]) continue;
-    // no neighbour of a or b may be used either, so that the single edges stay apart
-    bool apart = true;
-    for (Eigen::Index g = 0; g < t.num_edges() && apart; ++g)
-      for (int k = 0; k < 2; ++k) {
-        const int x = t.edges(g, k), y = t.edges(g, 1 - k);
-        if ((x == a || x == b) && used[static_cast<std::size_t>(y)]) apart = false;
-      }
-    if (!apart) continue;
+    if (taken[static_cast<std::size_t>(a)] || taken[static_cast<std::size_t>(b)]) continue;
     crease[static_cast<std::size_t>(e)] = 1;
-    used[static_cast<std::size_t>(a)] = used[static_cast<std::size_t>(b)] = 1;
+    take(a);
+    take(b);
     ++singles;
   }
   ASSERT_EQ(singles, 5);
-  const double h = len.mean();
-  EXPECT_NEAR(total(len, crease), 5 * h, 1e-9 + 0.5 * h * 5);
-  EXPECT_EQ(detail::crease_line_length(t, len, crease, cube.V.rows(), 2.5 * h), 0.0);
-  EXPECT_DOUBLE_EQ(detail::crease_line_length(t, len, crease, cube.V.rows(), 0.0), total(len, crease));
+  const double all = total(len, crease);
+  ASSERT_GT(all, side * (1 + 1e-9));
+  EXPECT_NEAR(detail::crease_line_length(t, len, crease, cube.V.rows(), 0.5 * side), side, 1e-9 * side);
+  EXPECT_NEAR(detail::crease_line_length(t, len, crease, cube.V.rows(), 0.99 * side), side, 1e-9 * side);
+  EXPECT_EQ(detail::crease_line_length(t, len, crease, cube.V.rows(), 1.01 * side), 0.0);
+  EXPECT_DOUBLE_EQ(detail::crease_line_length(t, len, crease, cube.V.rows(), 0.0), all);
 }
 
 TEST(CreaseLines, TheShapeRuleCountsCreasesOnLines) {
