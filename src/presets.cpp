@@ -253,8 +253,19 @@ PresetChoice detail::choose_preset_masked(const Eigen::MatrixXd& V, const Eigen:
       });
   const double total = edge_sums[0], flat = edge_sums[1], sharp = edge_sums[2];
   const double mean_length = edge_sums[3] > 0 ? total / edge_sums[3] : 0;
-  const double on_lines =
-      sharp > 0 ? detail::crease_line_length(t, len, crease, V.rows(), kCreaseLineMinEdges * mean_length) : 0;
+  // In a patch sample a line may go on beyond the measured faces: one that reaches a vertex of an
+  // unmeasured face counts as long.
+  std::vector<char> open;
+  if (measured && sharp > 0) {
+    open.assign(static_cast<std::size_t>(V.rows()), 0);
+    for (Eigen::Index f = 0; f < F.rows(); ++f)
+      if (!counts(f))
+        for (int k = 0; k < 3; ++k) open[static_cast<std::size_t>(F(f, k))] = 1;
+  }
+  const double on_lines = sharp > 0
+                              ? detail::crease_line_length(t, len, crease, V.rows(), kCreaseLineMinEdges * mean_length,
+                                                           measured ? &open : nullptr)
+                              : 0;
   const auto face_sums = detail::deterministic_sums<2>(
       F.rows(),
       [&](Eigen::Index f0, Eigen::Index f1, std::array<double, 2>& s) {

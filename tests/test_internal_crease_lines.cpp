@@ -115,3 +115,17 @@ TEST(CreaseLines, TheShapeRuleCountsCreasesOnLines) {
   const Eigen::MatrixXd moved = ((noisy * R.transpose()) * 250.0).rowwise() + Eigen::RowVector3d(-3, 8, 1);
   EXPECT_NEAR(choose_preset(moved, sphere.F).crease_line_fraction, s.crease_line_fraction, 1e-9);
 }
+
+TEST(CreaseLines, APatchSampleCountsLinesItCuts) {
+  // 480K faces, measured on a patch sample (presets.cpp): the cube's edges are cut by the
+  // patches' borders into pieces shorter than 40 edges, which still count as lines, as on the
+  // whole mesh.
+  const Mesh cube = make_cube(200);
+  ASSERT_GT(cube.F.rows(), 400000);
+  const ResolvedPreset r = resolve_preset("auto", cube.V, cube.F);
+  ASSERT_GT(r.sample_faces, 0);
+  ASSERT_GT(r.choice.sharp_fraction, 0.0);
+  EXPECT_NEAR(r.choice.crease_line_fraction, r.choice.sharp_fraction, 1e-12);
+  const PresetChoice whole = choose_preset(cube.V, cube.F);
+  EXPECT_NEAR(whole.crease_line_fraction, whole.sharp_fraction, 1e-12);
+}
