@@ -87,6 +87,14 @@ def test_denoise_equals_cli(tmp_path, noisy_fandisk, preset, method, params):
         assert report["preset"] == preset
 
 
+def test_choose_preset_counts_creases_on_lines(noisy_fandisk):
+    V, F, V_truth = noisy_fandisk
+    c = msmesh.choose_preset(V_truth, F)  # the clean fandisk: its creases are long lines
+    assert c["preset"] == "cad", c["reason"]
+    assert c["sharp_fraction"] > 0 and c["crease_line_fraction"] == pytest.approx(c["sharp_fraction"], rel=0.05)
+    assert "on lines of 40 edges or more" in c["reason"]
+
+
 def test_noise_estimate_and_strength(noisy_fandisk):
     V, F, V_truth = noisy_fandisk
     e = msmesh.estimate_noise(V, F)  # seeded sigma 0.2 along the normals
@@ -97,6 +105,7 @@ def test_noise_estimate_and_strength(noisy_fandisk):
     assert r["noise_sigma_rms"] == pytest.approx(e["sigma_rms"]) and r["strength"] == 1.0
     assert r["noise_sigma_noise"] == pytest.approx(e["sigma_noise"]) and r["noise_detail"] == pytest.approx(e["detail"])
     assert "noise sigma" in r["preset_reason"]
+    assert 0 <= r["auto_crease_line_fraction"] <= r["auto_sharp_fraction"]
     _, r2 = msmesh.denoise(V, F, strength=3.0)
     assert r2["noise_level_used"] == pytest.approx(3.0 * r["noise_level_used"])
     assert r2["parameters"]["alpha"] <= r["parameters"]["alpha"]
