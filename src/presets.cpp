@@ -79,6 +79,15 @@ constexpr int kPrefilterMax = 5, kPrefilterMaxSmooth = 10;
 //   the fairness term (v ≈ 1 everywhere on organic shapes) flattens curvature the input still has,
 //   so it is weak at low noise and reaches its full weight at σ 0.4.
 constexpr double kFairnessFrom = 0.1, kFairnessSpan = 0.3, kFairnessMinShare = 0.1;
+//   τ (class cad), the share of the fairness term that acts along the surface
+//   (VertexUpdateOptions::fairness_tangential) = kTangentialMin up to σ kTangentialFrom, rising
+//   linearly to 1 (the paper's whole term) at kTangentialTo: the term's pull along the surface
+//   evens out the triangles, which heavier noise in random directions needs (sweep at τ 0.3
+//   everywhere: random σ 0.2–0.7 1.17–2.07× the MSAE), but at low noise it moves a CAD
+//   tessellation's own triangles off their places, tilting their normals (cad σ ≤ 0.1 read:
+//   0.79–0.94×). The class smooth keeps 1: on organic meshes random noise of σ 0.1 already lost
+//   (1.09×). Sweep 12.54 → 12.44 (docs/presets.md, "Fairness along the normals").
+constexpr double kTangentialMin = 0.15, kTangentialFrom = 0.08, kTangentialTo = 0.12;
 //   ω₃ (both classes) = the class's ω₃ × clamp((kClosenessSigma / σ)², 1, kClosenessMaxGain): the
 //   closeness to the input is a Gaussian-likelihood weight, ∝ 1/σ², so below σ 0.13 it grows and
 //   the vertex update keeps the detail a nearly clean input still has (up to 3×, reached at σ 0.075).
@@ -206,6 +215,10 @@ DenoiseOptions adaptive_options(const std::string& shape_class, double sigma, do
     o.normals.polish *= std::clamp(sigma / kPolishFullSigma, kPolishMinShare, 1.0);
     o.normals.polish_range = std::clamp(kPolishRangePerSigma * sigma, kPolishRangeMin, o.normals.polish_range);
   }
+  if (shape_class == "cad")
+    o.vertices.fairness_tangential = std::clamp(
+        kTangentialMin + (1 - kTangentialMin) * (sigma - kTangentialFrom) / (kTangentialTo - kTangentialFrom),
+        kTangentialMin, 1.0);
   const double closeness = sigma > 0 ? kClosenessSigma / sigma : 1e300;
   o.vertices.omega3 *= std::clamp(closeness * closeness, 1.0, kClosenessMaxGain);
   if (shape_class == "smooth" && detail > 0) {
@@ -311,6 +324,9 @@ std::string ResolvedPreset::reason() const {
   const std::string polish = options.normals.polish > 0 ? ", polish " + fixed(options.normals.polish, 2) + " (range " +
                                                               fixed(options.normals.polish_range, 2) + ")"
                                                         : "";
+  const std::string tangential = options.vertices.fairness_tangential < 1
+                                     ? ", fairness along the surface " + fixed(options.vertices.fairness_tangential, 2)
+                                     : "";
   const std::string cap =
       scan_like  ? " (at most " + fixed(kAlphaMaxScanLike, 0) + ": scan-like, few creases and more detail than noise)"
       : despiked ? " (at most " + fixed(kAlphaMaxScanLike, 0) + " after the spike removal)"
@@ -321,7 +337,7 @@ std::string ResolvedPreset::reason() const {
                                                     : "";
   return "chosen automatically (" + sampled + noise.summary() + spikes + s + detail + ": alpha " +
          fixed(options.normals.alpha, 2) + cap + ", prefilter " + std::to_string(options.prefilter_iterations) +
-         polish + "; " + choice.reason + quadric + ")";
+         polish + tangential + "; " + choice.reason + quadric + ")";
 }
 
 ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,

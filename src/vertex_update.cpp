@@ -60,11 +60,13 @@ struct EdgeQuads {
   std::vector<std::array<int, 4>> quad;
   std::vector<double> quad_v;
   std::vector<int> role_start, roles;
+  Rows quad_normal;  // the edge's unit mean target normal (only for a fairness along the normals)
 };
 
-// F and the quads in the numbering `vertex` gives topo's vertices (empty: topo's own).
+// F and the quads in the numbering `vertex` gives topo's vertices (empty: topo's own); with
+// target normals N (#F by 3, else empty), each quad's mean normal too.
 EdgeQuads edge_quads(const Eigen::MatrixXi& F, const Topology& topo, const std::vector<int>& vertex,
-                     const Eigen::VectorXd& v, Eigen::Index nv) {
+                     const Eigen::VectorXd& v, Eigen::Index nv, const Eigen::MatrixXd& N) {
   EdgeQuads q;
   q.role_start.assign(static_cast<size_t>(nv) + 1, 0);
   auto renumbered = [&](int i) { return vertex.empty() ? i : vertex[static_cast<size_t>(i)]; };
@@ -74,6 +76,17 @@ EdgeQuads edge_quads(const Eigen::MatrixXi& F, const Topology& topo, const std::
                       opposite_vertex(F, topo, topo.edge_faces(e, 0), e),
                       opposite_vertex(F, topo, topo.edge_faces(e, 1), e)});
     q.quad_v.push_back(v(e));
+  }
+  if (N.size()) {
+    q.quad_normal.resize(static_cast<Eigen::Index>(q.quad.size()), 3);
+    Eigen::Index h = 0;
+    for (Eigen::Index e = 0; e < topo.num_edges(); ++e) {
+      if (!topo.edge_is_interior[e]) continue;
+      const Eigen::RowVector3d n = N.row(topo.edge_faces(e, 0)) + N.row(topo.edge_faces(e, 1));
+      const double len = n.norm();
+      // Opposite normals (a fold) have no mean: the whole term acts there, as the paper's.
+      q.quad_normal.row(h++) = len > 1e-6 ? Eigen::RowVector3d(n / len) : Eigen::RowVector3d::Zero();
+    }
   }
   for (const auto& h : q.quad)
     for (int r = 0; r < 4; ++r) ++q.role_start[static_cast<size_t>(h[r]) + 1];
@@ -181,8 +194,27 @@ Eigen::Index p_step(const Eigen::MatrixXi& F, const Rows& X, const Eigen::Matrix
   return fallbacks;
 }
 
-// V-step right-hand side (eq. 27): rhs = ω₁KᵀP + ω₃V⁰ (rhs0), row by row.
-void v_step_rhs(const Rows& rhs0, const Rows& P, const VertexCorners& vc, double omega1, Rows& rhs) {
+// Q-step of the fairness along the normals: with the term written as
+// ω₂ v_e² (‖d_e − q_e‖² + λ‖q_e‖²), q_e in the plane orthogonal to n_e and λ = τ/(1 − τ), its
+// minimum over q_e is v_e² (1 − τ)(d_e − n_e(n_e·d_e)), which makes the term
+// ω₂ v_e² [(n_e·d_e)² + τ‖d_e − n_e(n_e·d_e)‖²]: the alternation with the V-step minimises it
+// as the P-step's projection does the normal term. Q holds ω₂ v_e² q_e.
+void q_step(const EdgeQuads& eq, const Rows& X, double omega2, double tangential, Rows& Q) {
+  detail::parallel_for(static_cast<Eigen::Index>(eq.quad.size()), [&](Eigen::Index h) {
+    const auto& q = eq.quad[static_cast<size_t>(h)];
+    const Eigen::RowVector3d d = X.row(q[0]) + X.row(q[1]) - X.row(q[2]) - X.row(q[3]);
+    const Eigen::RowVector3d n = eq.quad_normal.row(h);
+    const double ve = eq.quad_v[static_cast<size_t>(h)];
+    if (n.squaredNorm() == 0)
+      Q.row(h).setZero();  // a fold: the whole term
+    else
+      Q.row(h) = omega2 * ve * ve * (1 - tangential) * (d - n.dot(d) * n);
+  });
+}
+
+// V-step right-hand side (eq. 27): rhs = ω₁KᵀP + ω₃V⁰ (rhs0) [+ HᵀQ], row by row.
+void v_step_rhs(const Rows& rhs0, const Rows& P, const VertexCorners& vc, double omega1, const EdgeQuads* eq,
+                const Rows& Q, Rows& rhs) {
   detail::parallel_for(
       rhs0.rows(),
       [&](Eigen::Index i) {
@@ -190,6 +222,11 @@ void v_step_rhs(const Rows& rhs0, const Rows& P, const VertexCorners& vc, double
         // ω₁KᵀP: each corner of the vertex adds its (centred) row of P.
         for (int c = vc.start[static_cast<size_t>(i)]; c < vc.start[static_cast<size_t>(i) + 1]; ++c)
           b += omega1 * P.row(vc.corners[static_cast<size_t>(c)]);
+        if (eq)
+          for (int r = eq->role_start[static_cast<size_t>(i)]; r < eq->role_start[static_cast<size_t>(i) + 1]; ++r) {
+            const int role = eq->roles[static_cast<size_t>(r)];
+            b += (role % 4 < 2 ? 1.0 : -1.0) * Q.row(role / 4);
+          }
         rhs.row(i) = b;
       },
       2);  // about six corners per vertex
@@ -289,11 +326,14 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
 
   // Assembly of eq. 27: (ω₁KᵀK + ω₂HᵀH + ω₃I) V = ω₁KᵀP + ω₃V⁰.
   const VertexCorners vc = vertex_corners(Fw, nv);
-  EdgeQuads eq = o.omega2 > 0 ? edge_quads(Fw, topo, renumber, v, nv) : EdgeQuads{};
-  // The edge quads (~80 MB at a million faces), and the matrix when it is factored, are freed
-  // before the iterations' arrays are allocated; CG takes the matrix's arrays over.
+  // A fairness along the normals keeps the quads for its Q-step; else the quads (~80 MB at a
+  // million faces), and the matrix when it is factored, are freed before the iterations' arrays
+  // are allocated; CG takes the matrix's arrays over.
+  const bool along_normals = o.omega2 > 0 && o.fairness_tangential < 1;
+  EdgeQuads eq =
+      o.omega2 > 0 ? edge_quads(Fw, topo, renumber, v, nv, along_normals ? N : Eigen::MatrixXd()) : EdgeQuads{};
   SparseMatrix A_v = v_step_matrix(Fw, vc, eq, d3, o);
-  eq = EdgeQuads();
+  if (!along_normals) eq = EdgeQuads();
   const detail::ConstantSystem v_step =
       use_cg ? detail::ConstantSystem(std::move(A_v), "vertex update")
              : detail::ConstantSystem(A_v, detail::ConstantSystem::Method::Cholesky, "vertex update");
@@ -305,7 +345,7 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
   // X is the iterate x_k, G = G(x_k) the positions one P-step and V-step make of it; the plain
   // alternation takes x_{k+1} = G, the accelerated one combines G with the last iterations'.
   // The move of an iteration is ‖G(x_k) − x_k‖ either way (the plain alternation's step).
-  Rows X_old, G(nv, 3), rhs(nv, 3), P(3 * nf, 3);
+  Rows X_old, G(nv, 3), rhs(nv, 3), P(3 * nf, 3), Q(along_normals ? static_cast<Eigen::Index>(eq.quad.size()) : 0, 3);
   std::optional<detail::AndersonAcceleration> accelerate;
   if (o.acceleration > 0) accelerate.emplace(o.acceleration);
   double last_change = std::numeric_limits<double>::infinity();
@@ -324,7 +364,8 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
   const double closeness_min = d3.minCoeff();
   for (int k = 0; k < o.max_iterations; ++k) {
     const Eigen::Index fallbacks = p_step(Fw, X, N, P);
-    v_step_rhs(rhs0, P, vc, o.omega1, rhs);
+    if (along_normals) q_step(eq, X, o.omega2, o.fairness_tangential, Q);
+    v_step_rhs(rhs0, P, vc, o.omega1, along_normals ? &eq : nullptr, Q, rhs);
     // CG's warm start: in the plain alternation the secant x_k + (x_k − x_{k−1}) (the vertices
     // move smoothly from one iteration to the next: about a fifth fewer sweeps, Cone 1153 →
     // 940); the accelerated iterate x_k itself, already an extrapolation. Only the starting

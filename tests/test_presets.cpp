@@ -147,8 +147,8 @@ TEST(Presets, AdaptiveOptionsFollowTheNoise) {
       EXPECT_LE(o.normals.alpha, std::string(cls) == "cad" ? 10.0 : 5.0);
       EXPECT_GE(o.prefilter_iterations, 0);
       EXPECT_LE(o.prefilter_iterations, std::string(cls) == "cad" ? 5 : 10);
-      // Everything but α, the pre-filter, the closeness weight and (smooth) the fairness weight is
-      // the class's preset.
+      // Everything but α, the pre-filter, the closeness weight, (smooth) the fairness weight and
+      // (cad) its share along the surface is the class's preset.
       DenoiseOptions p = preset_options(cls);
       p.normals.alpha = o.normals.alpha;
       p.prefilter_iterations = o.prefilter_iterations;
@@ -171,6 +171,10 @@ TEST(Presets, AdaptiveOptionsFollowTheNoise) {
       EXPECT_GE(o.normals.polish_range, std::min(0.15, p.normals.polish_range)) << cls << " " << sigma;
       p.normals.polish = o.normals.polish;
       p.normals.polish_range = o.normals.polish_range;
+      // The fairness along the surface (cad only): 0.15 up to σ 0.08, the whole term from 0.12.
+      EXPECT_LE(o.vertices.fairness_tangential, 1.0) << cls << " " << sigma;
+      EXPECT_GE(o.vertices.fairness_tangential, std::string(cls) == "cad" ? 0.15 : 1.0) << cls << " " << sigma;
+      p.vertices.fairness_tangential = o.vertices.fairness_tangential;
       expect_same_parameters(denoise_parameters(), o, p, std::string(cls) + " at " + std::to_string(sigma));
     }
     const DenoiseOptions o = adaptive_options("cad", sigma);
@@ -189,6 +193,11 @@ TEST(Presets, AdaptiveOptionsFollowTheNoise) {
   EXPECT_EQ(adaptive_options("cad", 0.7).prefilter_iterations, 5);
   EXPECT_LT(adaptive_options("smooth", 0.1).vertices.omega2, adaptive_options("smooth", 0.5).vertices.omega2);
   EXPECT_EQ(adaptive_options("cad", 0.1).vertices.omega2, preset_options("cad").vertices.omega2);
+  EXPECT_EQ(adaptive_options("cad", 0.05).vertices.fairness_tangential, 0.15);
+  EXPECT_NEAR(adaptive_options("cad", 0.1).vertices.fairness_tangential, 0.575, 1e-12);
+  EXPECT_EQ(adaptive_options("cad", 0.12).vertices.fairness_tangential, 1.0);
+  EXPECT_EQ(preset_options("cad").vertices.fairness_tangential, 1.0);
+  EXPECT_EQ(preset_options("paper").vertices.fairness_tangential, 1.0);
   for (const char* cls : {"cad", "smooth"}) {
     const double omega3 = preset_options(cls).vertices.omega3;
     EXPECT_DOUBLE_EQ(adaptive_options(cls, 0.0).vertices.omega3, 3 * omega3) << cls;       // clean: the most closeness

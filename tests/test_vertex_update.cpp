@@ -1,10 +1,14 @@
 // vertex_update.h (Algorithm 2): a mesh that matches its target normals stays, the update
 // moves vertices towards target normals, is invariant to scale and translation, pins nothing
-// it should not, and refuses bad options, targets and weights. Cholesky and CG agree:
+// it should not, and refuses bad options, targets and weights; the fairness along the normals
+// (τ < 1) keeps a flat mesh's triangles and still bends. Cholesky and CG agree:
 // test_solver.cpp.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
@@ -128,6 +132,72 @@ TEST(VertexUpdate, AccelerationReachesThePlainAlternationsFixedPointInFewerSteps
     EXPECT_LT((a.V - b.V).cwiseAbs().maxCoeff(), 1e-6 * m.V.cwiseAbs().maxCoeff());
     EXPECT_LT(2 * b.iterations, a.iterations) << "plain " << a.iterations << ", accelerated " << b.iterations;
   }
+}
+
+// A flat grid jittered within its plane, with targets (0, 0, 1): the normal term, the
+// closeness and the fairness along the normals are all zero at the input, so τ = 0 keeps it;
+// the whole fairness (τ = 1, the paper's) evens the triangles out and moves it.
+TEST(VertexUpdate, FairnessAlongTheNormalsKeepsAFlatGridsTriangles) {
+  Mesh g = test::grid(8);
+  g.V.col(2).setZero();
+  const Mesh jitter = test::noisy(g, 0.02);
+  g.V.leftCols(2) = jitter.V.leftCols(2);
+  const Eigen::MatrixXd N = Eigen::RowVector3d(0, 0, 1).replicate(g.F.rows(), 1);
+  for (LinearSolver solver : {LinearSolver::Cholesky, LinearSolver::CG}) {
+    VertexUpdateOptions o;
+    o.solver = solver;
+    o.solver_tolerance = 1e-12;
+    o.fairness_tangential = 0;
+    EXPECT_LT((update_vertices(g.V, g.F, N, {}, o).V - g.V).cwiseAbs().maxCoeff(), 1e-9);
+    o.fairness_tangential = 1;
+    EXPECT_GT((update_vertices(g.V, g.F, N, {}, o).V - g.V).cwiseAbs().maxCoeff(), 1e-3);
+  }
+}
+
+// The fairness along the normals still bends: on a grid jittered within its plane, with a bump
+// and flat targets, τ = 0 lowers the bump as τ = 1 does but leaves the jitter nearly in place,
+// and τ = 0.5 moves the vertices along the plane less than τ = 1 and more than τ = 0. Its Q-step
+// sees the targets only through each edge's plane, so the update stays invariant under
+// rotation (targets rotated too), scale and translation.
+TEST(VertexUpdate, FairnessAlongTheNormalsStillBendsAndIsInvariant) {
+  Mesh g = test::grid(10, 0.05);
+  const Mesh jitter = test::noisy(g, 0.02);
+  g.V.leftCols(2) = jitter.V.leftCols(2);
+  const Eigen::MatrixXd N = Eigen::RowVector3d(0, 0, 1).replicate(g.F.rows(), 1);
+  VertexUpdateOptions o;
+  o.omega2 = 1;
+  o.max_iterations = 200;
+  o.tolerance = 1e-9;
+  const double before = test::z_rms(g.V, 0, g.V.rows());
+  std::vector<double> bump, along;
+  for (double tau : {0.0, 0.5, 1.0}) {
+    o.fairness_tangential = tau;
+    const Eigen::MatrixXd V = update_vertices(g.V, g.F, N, {}, o).V;
+    bump.push_back(test::z_rms(V, 0, V.rows()));
+    along.push_back((V.leftCols(2) - g.V.leftCols(2)).rowwise().norm().mean());
+  }
+  EXPECT_LT(bump[0], 0.6 * before);
+  EXPECT_LT(bump[2], 0.6 * before);
+  EXPECT_LT(along[0], 0.2 * along[2]) << along[0] << " " << along[2];
+  EXPECT_LT(along[0], along[1]);
+  EXPECT_LT(along[1], along[2]);
+
+  const Mesh m = test::noisy_cube(4, 0.1);
+  const Mesh c = make_cube(4);
+  const Eigen::MatrixXd Nc = face_normals(c.V, c.F);
+  VertexUpdateOptions half;
+  half.fairness_tangential = 0.3;
+  const VertexUpdateResult a = update_vertices(m.V, m.F, Nc, {}, half);
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::RowVector3d shift(5, -2, 1);
+  const Eigen::MatrixXd V2 = ((3.0 * m.V) * R.transpose()).rowwise() + shift;
+  const VertexUpdateResult b = update_vertices(V2, m.F, Nc * R.transpose(), {}, half);
+  const Eigen::MatrixXd back = ((b.V.rowwise() - shift) / 3.0) * R;
+  EXPECT_LT((back - a.V).cwiseAbs().maxCoeff(), 1e-7 * m.V.cwiseAbs().maxCoeff());
+  half.fairness_tangential = 1.5;
+  EXPECT_THROW(half.validate(), InvalidInput);
+  half.fairness_tangential = -0.1;
+  EXPECT_THROW(update_vertices(m.V, m.F, Nc, {}, half), InvalidInput);
 }
 
 TEST(VertexUpdate, ThePaperPresetKeepsThePlainAlternation) {

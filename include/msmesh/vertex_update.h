@@ -18,9 +18,15 @@ namespace msmesh {
 /// Options of Algorithm 2. The defaults are those of preset "cad" (presets.h); ranges and help
 /// in vertex_update_parameters() (parameters.h).
 struct VertexUpdateOptions {
-  double omega1 = 1.0;      ///< ω₁ > 0, normal matching (fixed to 1 in the paper)
-  double omega2 = 0.03;     ///< ω₂ ≥ 0, fairness across edges weighted by v² (paper range [0.001, 0.1])
-  double omega3 = 0.1;      ///< ω₃ > 0, closeness to the input positions (paper range [0.001, 0.1])
+  double omega1 = 1.0;   ///< ω₁ > 0, normal matching (fixed to 1 in the paper)
+  double omega2 = 0.03;  ///< ω₂ ≥ 0, fairness across edges weighted by v² (paper range [0.001, 0.1])
+  double omega3 = 0.1;   ///< ω₃ > 0, closeness to the input positions (paper range [0.001, 0.1])
+  /// τ ∈ [0, 1]: the share of the fairness term that acts along the surface. The term is
+  /// ω₂ v_e² [(n_e·d_e)² + τ ‖d_e − n_e(n_e·d_e)‖²] with d_e = x₁ + x₂ − x₃ − x₄ and n_e the mean
+  /// target normal of the edge's two faces: 1 is the paper's ω₂ v_e² ‖d_e‖² (it also moves
+  /// vertices along the surface, evening out the triangles), 0 only bends (docs/presets.md,
+  /// "Fairness along the normals").
+  double fairness_tangential = 1.0;
   int max_iterations = 30;  ///< k ≥ 1
   /// ε₂: stop when the RMS vertex move of an iteration (mean-edge units) is below this. 1e-3:
   /// later iterations move the vertices by less than a thousandth of an edge and change no

@@ -152,6 +152,7 @@ void bind_denoise(py::module_& m) {
       .def_readwrite("omega1", &VertexUpdateOptions::omega1)
       .def_readwrite("omega2", &VertexUpdateOptions::omega2)
       .def_readwrite("omega3", &VertexUpdateOptions::omega3)
+      .def_readwrite("fairness_tangential", &VertexUpdateOptions::fairness_tangential)
       .def_readwrite("max_iterations", &VertexUpdateOptions::max_iterations)
       .def_readwrite("tolerance", &VertexUpdateOptions::tolerance)
       .def_readwrite("solver", &VertexUpdateOptions::solver)
