@@ -86,7 +86,8 @@ constexpr double kFairnessFrom = 0.1, kFairnessSpan = 0.3, kFairnessMinShare = 0
 //   everywhere: random σ 0.2–0.7 1.17–2.07× the MSAE), but at low noise it moves a CAD
 //   tessellation's own triangles off their places, tilting their normals (cad σ ≤ 0.1 read:
 //   0.79–0.94×). The class smooth keeps 1: on organic meshes random noise of σ 0.1 already lost
-//   (1.09×). Sweep 12.54 → 12.44 (docs/presets.md, "Fairness along the normals").
+//   (1.09×); so do featureless surfaces (below; procedural spheres at σ 0.05–0.1 lost 1.3–1.9×).
+//   Sweep 12.54 → 12.44 (docs/presets.md, "Fairness along the normals").
 constexpr double kTangentialMin = 0.15, kTangentialFrom = 0.08, kTangentialTo = 0.12;
 //   ω₃ (both classes) = the class's ω₃ × clamp((kClosenessSigma / σ)², 1, kClosenessMaxGain): the
 //   closeness to the input is a Gaussian-likelihood weight, ∝ 1/σ², so below σ 0.13 it grows and
@@ -435,6 +436,7 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
     r.options.normals.polish_range = kFeaturelessPolishRange;
     r.options.vertices.omega3 = preset_options("cad").vertices.omega3;
     r.options.vertices.omega2 = kFeaturelessFairness;
+    r.options.vertices.fairness_tangential = 1;  // all of it: nothing to keep between the triangles
   }
   return r;
 }
