@@ -60,7 +60,7 @@ struct EdgeQuads {
   std::vector<std::array<int, 4>> quad;
   std::vector<double> quad_v;
   std::vector<int> role_start, roles;
-  Rows quad_normal;  // the edge's unit mean target normal (only for a fairness along the normals)
+  std::vector<Eigen::RowVector3d> quad_normal;  // unit mean target normal (a fairness along the normals)
 };
 
 // F and the quads in the numbering `vertex` gives topo's vertices (empty: topo's own); with
@@ -76,16 +76,11 @@ EdgeQuads edge_quads(const Eigen::MatrixXi& F, const Topology& topo, const std::
                       opposite_vertex(F, topo, topo.edge_faces(e, 0), e),
                       opposite_vertex(F, topo, topo.edge_faces(e, 1), e)});
     q.quad_v.push_back(v(e));
-  }
-  if (N.size()) {
-    q.quad_normal.resize(static_cast<Eigen::Index>(q.quad.size()), 3);
-    Eigen::Index h = 0;
-    for (Eigen::Index e = 0; e < topo.num_edges(); ++e) {
-      if (!topo.edge_is_interior[e]) continue;
+    if (N.size()) {
       const Eigen::RowVector3d n = N.row(topo.edge_faces(e, 0)) + N.row(topo.edge_faces(e, 1));
       const double len = n.norm();
       // Opposite normals (a fold) have no mean: the whole term acts there, as the paper's.
-      q.quad_normal.row(h++) = len > 1e-6 ? Eigen::RowVector3d(n / len) : Eigen::RowVector3d::Zero();
+      q.quad_normal.push_back(len > 1e-6 ? Eigen::RowVector3d(n / len) : Eigen::RowVector3d::Zero());
     }
   }
   for (const auto& h : q.quad)
@@ -203,7 +198,7 @@ void q_step(const EdgeQuads& eq, const Rows& X, double omega2, double tangential
   detail::parallel_for(static_cast<Eigen::Index>(eq.quad.size()), [&](Eigen::Index h) {
     const auto& q = eq.quad[static_cast<size_t>(h)];
     const Eigen::RowVector3d d = X.row(q[0]) + X.row(q[1]) - X.row(q[2]) - X.row(q[3]);
-    const Eigen::RowVector3d n = eq.quad_normal.row(h);
+    const Eigen::RowVector3d& n = eq.quad_normal[static_cast<size_t>(h)];
     const double ve = eq.quad_v[static_cast<size_t>(h)];
     if (n.squaredNorm() == 0)
       Q.row(h).setZero();  // a fold: the whole term
