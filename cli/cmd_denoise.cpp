@@ -159,6 +159,8 @@ void run(const Args& a) {
     j.add("despiked_vertices", static_cast<long long>(r.despiked_vertices));
     j.add("planar_regions", static_cast<long long>(r.planar_regions))
         .add("planar_faces", static_cast<long long>(r.planar_faces));
+    j.add("kept_components", static_cast<long long>(r.kept_components))
+        .add("kept_faces", static_cast<long long>(r.kept_faces));
     j.add("n_step_cg_sweeps", r.normal_report.n_solver_iterations)
         .add("v_step_cg_sweeps", r.vertex_report.solver_iterations);
     j.add("residual_history", r.normal_report.residual_history);
@@ -201,11 +203,17 @@ void run(const Args& a) {
     if (r.planar_regions > 0)
       std::cout << "  planar regions:   " << r.planar_regions << " (" << r.planar_faces
                 << " faces) snapped to their fitted planes\n";
-    std::cout << "  normal filtering: " << r.normal_report.iterations << " iterations, " << fmt(r.seconds_normals, 3)
-              << " s, residual |p - grad N| "
-              << fmt(r.normal_report.residual_history.empty() ? 0.0 : r.normal_report.residual_history.back()) << "\n";
-    std::cout << "  vertex update:    " << r.vertex_report.iterations << " iterations, " << fmt(r.seconds_vertices, 3)
-              << " s\n";
+    if (r.kept_components > 0)
+      std::cout << "  kept as they are: " << r.kept_components << " component(s) of fewer than "
+                << o.min_component_faces << " faces (" << r.kept_faces << " faces): too few to tell noise from shape\n";
+    if (r.kept_faces < mesh.F.rows()) {
+      std::cout << "  normal filtering: " << r.normal_report.iterations << " iterations, " << fmt(r.seconds_normals, 3)
+                << " s, residual |p - grad N| "
+                << fmt(r.normal_report.residual_history.empty() ? 0.0 : r.normal_report.residual_history.back())
+                << "\n";
+      std::cout << "  vertex update:    " << r.vertex_report.iterations << " iterations, " << fmt(r.seconds_vertices, 3)
+                << " s\n";
+    }
   } else {
     std::cout << "  bilateral normals " << fmt(r.seconds_normals, 3) << " s, vertex update "
               << fmt(r.seconds_vertices, 3) << " s\n";

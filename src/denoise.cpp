@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "mesh_components.h"
 #include "msmesh/despike.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
@@ -18,7 +19,6 @@
 #include "msmesh/topology.h"
 #include "planar_regions.h"
 #include "sub_mesh.h"
-#include "union_find.h"
 
 namespace msmesh {
 
@@ -45,23 +45,6 @@ void keep_unreferenced(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, Eigen
 /// solvers' tolerance relative to the large part's ("v-step conjugate gradient did not
 /// converge" on a bolt beside a 1e-5 washer).
 constexpr double kComponentScaleRatio = 100.0;
-
-/// The vertex-connected component of each face, and their number.
-std::vector<int> face_component_labels(const Eigen::MatrixXi& F, Eigen::Index num_vertices, int& count) {
-  detail::UnionFind uf(static_cast<std::size_t>(num_vertices));
-  for (Eigen::Index f = 0; f < F.rows(); ++f) {
-    uf.unite(F(f, 0), F(f, 1));
-    uf.unite(F(f, 1), F(f, 2));
-  }
-  std::vector<int> id(static_cast<std::size_t>(num_vertices), -1), label(static_cast<std::size_t>(F.rows()));
-  count = 0;
-  for (Eigen::Index f = 0; f < F.rows(); ++f) {
-    int& c = id[static_cast<std::size_t>(uf.find(F(f, 0)))];
-    if (c < 0) c = count++;
-    label[static_cast<std::size_t>(f)] = c;
-  }
-  return label;
-}
 
 /// True when the mean edge lengths of the components differ by more than kComponentScaleRatio.
 bool components_differ_in_scale(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::vector<int>& label,
@@ -94,6 +77,7 @@ void DenoiseOptions::validate() const {
     check_parameter(find_parameter(denoise_parameters(), "prefilter")->info, prefilter_iterations);
     check_parameter(find_parameter(denoise_parameters(), "despike")->info, despike_threshold);
     check_parameter(find_parameter(denoise_parameters(), "planes")->info, plane_min_faces);
+    check_parameter(find_parameter(denoise_parameters(), "min-component-faces")->info, min_component_faces);
   }
 }
 
@@ -104,45 +88,53 @@ double denoise_memory_estimate(Eigen::Index num_vertices, Eigen::Index num_faces
 
 namespace {
 
-/// Denoises each component on its own (its own normalisation) and puts the results together:
-/// positions, normals and edge field in the input's numbering; the reports are those of the
-/// component with the most faces.
-DenoiseResult denoise_components(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::vector<int>& label,
-                                 int count, const DenoiseOptions& o, const ProgressCallback& progress) {
+/// The denoised sub-mesh `sub` of the faces `faces` put into `r` in the input's numbering:
+/// positions, normals and (with a field) the edge field on the edges `topo` of the whole mesh.
+void put_back(const DenoiseResult& part, const detail::SubMesh& sub, const std::vector<Eigen::Index>& faces,
+              const Topology& topo, DenoiseResult& r) {
+  for (std::size_t i = 0; i < sub.global.size(); ++i) r.V.row(sub.global[i]) = part.V.row(static_cast<Eigen::Index>(i));
+  for (std::size_t i = 0; i < faces.size(); ++i)
+    r.normals.row(faces[i]) = part.normals.row(static_cast<Eigen::Index>(i));
+  if (part.v.size() > 0) {
+    const Topology tc = build_topology(sub.F, sub.V.rows());
+    for (std::size_t i = 0; i < faces.size(); ++i)
+      for (int k = 0; k < 3; ++k)
+        r.v(topo.face_edges(faces[i], k)) = part.v(tc.face_edges(static_cast<Eigen::Index>(i), k));
+  }
+  r.seconds_normals += part.seconds_normals;
+  r.seconds_vertices += part.seconds_vertices;
+  r.despiked_vertices += part.despiked_vertices;
+  r.planar_regions += part.planar_regions;
+  r.planar_faces += part.planar_faces;
+}
+
+/// The result of denoising some groups of faces (each group on its own, with its own scale
+/// normalisation), every other face kept as it is: the input's positions and face normals, and
+/// an edge field of 1 (no feature). The reports are those of the group with the most faces.
+DenoiseResult denoise_groups(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
+                             const std::vector<std::vector<Eigen::Index>>& groups, const DenoiseOptions& o,
+                             const ProgressCallback& progress) {
   DenoiseResult r;
   r.V = V;
-  r.normals = Eigen::MatrixXd::Zero(F.rows(), 3);
+  r.normals = face_normals(V, F);
   const Topology topo = build_topology(F, V.rows());
-  const bool has_field = o.method != DenoiseMethod::Bilateral;
-  if (has_field) r.v = Eigen::VectorXd::Ones(topo.num_edges());
+  if (o.method != DenoiseMethod::Bilateral) {
+    r.v = Eigen::VectorXd::Ones(topo.num_edges());
+    r.edges = topo.edges;
+  }
   std::vector<int> local(static_cast<std::size_t>(V.rows()), -1);
-  std::vector<std::vector<Eigen::Index>> faces_of(static_cast<std::size_t>(count));
-  for (Eigen::Index f = 0; f < F.rows(); ++f) faces_of[static_cast<std::size_t>(label[f])].push_back(f);
-  Eigen::Index largest = -1;
-  for (const std::vector<Eigen::Index>& faces : faces_of) {
+  std::size_t largest = 0;
+  for (const std::vector<Eigen::Index>& faces : groups) {
+    if (faces.empty()) continue;
     const detail::SubMesh sub = detail::sub_mesh(V, F, faces, local);
-    const std::vector<int>& global = sub.global;
     if (!(mean_edge_length(sub.V, sub.F) > 0)) continue;  // all faces degenerate: nothing to scale, kept as it is
-    DenoiseResult rc = denoise(sub.V, sub.F, o, progress);
-    for (std::size_t i = 0; i < global.size(); ++i) r.V.row(global[i]) = rc.V.row(static_cast<Eigen::Index>(i));
-    for (std::size_t i = 0; i < faces.size(); ++i)
-      r.normals.row(faces[i]) = rc.normals.row(static_cast<Eigen::Index>(i));
-    if (has_field) {
-      const Topology tc = build_topology(sub.F, sub.V.rows());
-      for (std::size_t i = 0; i < faces.size(); ++i)
-        for (int k = 0; k < 3; ++k)
-          r.v(topo.face_edges(faces[i], k)) = rc.v(tc.face_edges(static_cast<Eigen::Index>(i), k));
+    DenoiseResult part = denoise(sub.V, sub.F, o, progress);
+    put_back(part, sub, faces, topo, r);
+    if (faces.size() > largest) {
+      largest = faces.size();
+      r.normal_report = std::move(part.normal_report);
+      r.vertex_report = std::move(part.vertex_report);
     }
-    if (largest < 0 || static_cast<Eigen::Index>(faces.size()) > largest) {
-      largest = static_cast<Eigen::Index>(faces.size());
-      r.normal_report = std::move(rc.normal_report);
-      r.vertex_report = std::move(rc.vertex_report);
-    }
-    r.seconds_normals += rc.seconds_normals;
-    r.seconds_vertices += rc.seconds_vertices;
-    r.despiked_vertices += rc.despiked_vertices;
-    r.planar_regions += rc.planar_regions;
-    r.planar_faces += rc.planar_faces;
   }
   return r;
 }
@@ -163,9 +155,25 @@ DenoiseResult denoise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
     return r;
   }
   int components = 0;
-  const std::vector<int> label = face_component_labels(F, V.rows(), components);
-  if (components > 1 && components_differ_in_scale(V, F, label, components))
-    return denoise_components(V, F, label, components, o, progress);
+  const std::vector<int> label = detail::face_component_labels(F, V.rows(), components);
+  if (o.method != DenoiseMethod::Bilateral && o.min_component_faces > 1) {
+    detail::ComponentSplit split = detail::split_small_components(label, components, o.min_component_faces);
+    if (split.small_faces > 0) {
+      // The large components are denoised as a mesh of their own (the rules below apply to it),
+      // the small ones kept.
+      DenoiseOptions large = o;
+      large.min_component_faces = 0;
+      DenoiseResult kept = denoise_groups(V, F, {std::move(split.large_faces)}, large, progress);
+      kept.kept_components = split.small_components;
+      kept.kept_faces = split.small_faces;
+      return kept;
+    }
+  }
+  if (components > 1 && components_differ_in_scale(V, F, label, components)) {
+    std::vector<std::vector<Eigen::Index>> groups(static_cast<std::size_t>(components));
+    for (Eigen::Index f = 0; f < F.rows(); ++f) groups[static_cast<std::size_t>(label[f])].push_back(f);
+    return denoise_groups(V, F, groups, o, progress);
+  }
   if (o.method == DenoiseMethod::Bilateral) {
     r.normals = bilateral_filter_normals(V, F, o.bilateral, progress);
     const auto t1 = clock::now();

@@ -284,6 +284,11 @@ const ParameterTable<DenoiseOptions>& denoise_parameters() {
                               "plane's (neighbours within 1°, all within 4° of their mean; 0: off, as the paper)",
                               kNormals),
                       &O::plane_min_faces));
+    t.push_back(field(integer("min-component-faces", "", closed(0, 2147483647),
+                              "components (vertex-connected) of fewer faces are kept as they are: too few to tell "
+                              "noise from shape (0: every component denoised, as the paper)",
+                              kNormals),
+                      &O::min_component_faces));
     t.push_back(shared_solver_tolerance<O>());
     return t;
   }();

@@ -12,6 +12,7 @@
 #include "featureless.h"
 #include "low_pass_residuals.h"
 #include "masked_measures.h"
+#include "mesh_components.h"
 #include "msmesh/bilateral.h"
 #include "msmesh/despike.h"
 #include "msmesh/errors.h"
@@ -22,6 +23,7 @@
 #include "msmesh/topology.h"
 #include "parallel.h"
 #include "patch_sample.h"
+#include "sub_mesh.h"
 
 namespace msmesh {
 
@@ -191,6 +193,7 @@ DenoiseOptions preset_options(const std::string& name) {
     o.vertices.acceleration = 0;                                      // Algorithm 2's plain alternation
     o.normals.polish = 0;                                             // Algorithm 1's normals as they come
     o.plane_min_faces = 0;                                            // and no planar regions
+    o.min_component_faces = 0;                                        // every component denoised
     o.normals.solver_tolerance = o.vertices.solver_tolerance = 1e-8;  // exact solves, as the paper's
     return o;
   }
@@ -336,7 +339,12 @@ std::string ResolvedPreset::reason() const {
                                                           (featureless ? " < " : " >= ") + fixed(featureless_limit, 3) +
                                                           (featureless ? ": featureless, cad" : "")
                                                     : "";
-  return "chosen automatically (" + sampled + noise.summary() + spikes + s + detail + ": alpha " +
+  const std::string small = unmeasured_faces > 0
+                                ? "without the " + std::to_string(unmeasured_faces) + " faces of " +
+                                      std::to_string(unmeasured_components) + " component(s) of fewer than " +
+                                      std::to_string(options.min_component_faces) + " faces; "
+                                : "";
+  return "chosen automatically (" + sampled + small + noise.summary() + spikes + s + detail + ": alpha " +
          fixed(options.normals.alpha, 2) + cap + ", prefilter " + std::to_string(options.prefilter_iterations) +
          polish + tangential + "; " + choice.reason + quadric + ")";
 }
@@ -366,6 +374,23 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   // A large mesh is measured on the cores of patches spread over it: the same figures to the
   // printed digits (tests/test_presets.cpp), for a fraction of the time (docs/performance.md).
   const bool sampled = F.rows() > kSampleAboveFaces;
+  // Components that denoise() keeps as they are are not measured either: the low pass reads a
+  // small part's own shape as noise (a cube of 12 triangles beside a sphere of 20K faces: σ_rms
+  // 1.06 where the sphere alone reads 0.03). (A sample's patches never have a core there.)
+  if (!sampled) {
+    int components = 0;
+    const std::vector<int> label = detail::face_component_labels(F, V.rows(), components);
+    const int min_faces = preset_options("cad").min_component_faces;
+    detail::ComponentSplit split = detail::split_small_components(label, components, min_faces);
+    if (split.small_faces > 0 && !split.large_faces.empty()) {
+      std::vector<int> local(static_cast<std::size_t>(V.rows()), -1);
+      const detail::SubMesh large = detail::sub_mesh(V, F, split.large_faces, local);
+      ResolvedPreset measured = resolve_preset(name, large.V, large.F, strength);
+      measured.unmeasured_faces = split.small_faces;
+      measured.unmeasured_components = split.small_components;
+      return measured;
+    }
+  }
   detail::PatchSample sample;
   if (sampled) {
     sample = detail::sample_patches(V, F, kSamplePatches, kSamplePatchFaces, kSampleMargin);
@@ -409,7 +434,7 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   // The class smooth: the noise without the shape's own detail, and the detail kept (the class
   // was judged on the copy pre-filtered for σ_rms; the options may pre-filter less).
   double detail = 0;
-  if (r.preset == "smooth") {
+  if (r.preset == "smooth" && !r.despiked) {
     const double rms = measured.sigma_rms, d = measured.detail, n = kDetailDoubt * measured.sigma_noise;
     detail = std::sqrt(std::max(0.0, d * d - n * n));
     r.sigma = strength * std::sqrt(std::max(0.0, rms * rms - detail * detail));

@@ -220,15 +220,62 @@ TEST(Denoise, ProgressIsReportedAndCanCancel) {
 
 namespace {
 
-/// Denoising through the library must keep #V, F and order, and give finite positions.
+// A sphere of 1280 faces and, beside it, a cube of 12 triangles (the volgallery cubesphere's
+// situation), both noisy.
+Mesh sphere_beside_a_small_cube() {
+  const Mesh sphere = make_sphere(3), cube = make_cube(1);
+  return test::noisy(test::join(sphere, cube, Eigen::RowVector3d(4, 0, 0)), 0.02, 7);
+}
+
+/// Denoising through the library must keep #V, F and order, and give finite positions. Every
+/// component is denoised (some of these meshes are smaller than min_component_faces).
 DenoiseResult denoise_checked(const Mesh& m, const std::string& preset = "cad") {
-  const DenoiseResult r = denoise(m.V, m.F, preset_options(preset));
+  DenoiseOptions o = preset_options(preset);
+  o.min_component_faces = 0;
+  const DenoiseResult r = denoise(m.V, m.F, o);
   EXPECT_EQ(r.V.rows(), m.V.rows());
   EXPECT_TRUE(r.V.allFinite());
   return r;
 }
 
 }  // namespace
+
+TEST(Denoise, SmallComponentsAreKeptAsTheyAre) {
+  const Mesh m = sphere_beside_a_small_cube();
+  const Eigen::Index ns = make_sphere(3).V.rows(), fs = make_sphere(3).F.rows();
+  const DenoiseOptions o = preset_options("cad");
+  ASSERT_EQ(o.min_component_faces, 40);
+  const DenoiseResult r = denoise(m.V, m.F, o);
+  EXPECT_EQ(r.kept_components, 1);
+  EXPECT_EQ(r.kept_faces, 12);
+  // The cube's vertices and face normals as they were, its edges no feature.
+  EXPECT_EQ(r.V.bottomRows(8), m.V.bottomRows(8));
+  EXPECT_EQ(r.normals.bottomRows(12), face_normals(m.V, m.F).bottomRows(12));
+  const Topology topo = build_topology(m.F, m.V.rows());
+  ASSERT_EQ(r.v.size(), topo.num_edges());
+  ASSERT_EQ(r.edges.rows(), topo.num_edges());
+  for (Eigen::Index e = 0; e < topo.num_edges(); ++e)
+    if (r.edges(e, 0) >= ns) EXPECT_EQ(r.v(e), 1.0) << "edge " << e;
+  // The sphere as denoised alone (to round-off: the part's vertices are renumbered in order of
+  // first use).
+  const DenoiseResult alone = denoise(m.V.topRows(ns), m.F.topRows(fs), o);
+  EXPECT_LT((r.V.topRows(ns) - alone.V).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_LT((r.normals.topRows(fs) - alone.normals).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_EQ(r.normal_report.iterations, alone.normal_report.iterations);
+  // With the rule off (the paper's way) the cube is denoised too.
+  DenoiseOptions every = o;
+  every.min_component_faces = 0;
+  const DenoiseResult all = denoise(m.V, m.F, every);
+  EXPECT_EQ(all.kept_faces, 0);
+  EXPECT_GT((all.V.bottomRows(8) - m.V.bottomRows(8)).norm(), 1e-3);
+  EXPECT_EQ(preset_options("paper").min_component_faces, 0);
+  // A mesh of small components only comes back as it is.
+  const Mesh cube = test::noisy(make_cube(1), 0.02, 3);
+  const DenoiseResult kept = denoise(cube.V, cube.F, o);
+  EXPECT_EQ(kept.V, cube.V);
+  EXPECT_EQ(kept.kept_faces, 12);
+  EXPECT_EQ(kept.normal_report.iterations, 0);
+}
 
 TEST(AwkwardMeshes, NonManifoldEdgeIsDenoisedWithoutNaN) {
   Mesh m = test::fin();

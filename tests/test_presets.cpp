@@ -11,6 +11,7 @@
 #include "msmesh/inpaint.h"
 #include "msmesh/metrics.h"
 #include "msmesh/noise.h"
+#include "msmesh/noise_estimate.h"
 #include "msmesh/parameters.h"
 #include "msmesh/presets.h"
 #include "msmesh/read_mesh.h"
@@ -255,6 +256,25 @@ TEST(Presets, AutoIsInvariantUnderScaleRotationAndTranslation) {
   EXPECT_NEAR(a.sharp_fraction, b.sharp_fraction, 1e-9);
   EXPECT_NEAR(a.crease_line_fraction, b.crease_line_fraction, 1e-9);
   EXPECT_NEAR(a.flat_fraction, b.flat_fraction, 1e-9);
+}
+
+TEST(Presets, AutoDoesNotMeasureTheComponentsDenoiseKeeps) {
+  // A noisy sphere and a cube of 12 triangles beside it: the low pass would read the cube's own
+  // shape as noise (σ_rms ~1 where the sphere reads ~0.1); auto measures the sphere alone.
+  const Mesh sphere = test::noisy(make_shape("sphere", 12), 0.002, 5);
+  const Mesh both = test::join(sphere, make_cube(1), Eigen::RowVector3d(3, 0, 0));
+  const ResolvedPreset alone = resolve_preset("auto", sphere.V, sphere.F);
+  const ResolvedPreset r = resolve_preset("auto", both.V, both.F);
+  EXPECT_EQ(r.unmeasured_faces, 12);
+  EXPECT_EQ(r.unmeasured_components, 1);
+  EXPECT_EQ(alone.unmeasured_faces, 0);
+  EXPECT_NEAR(r.noise.sigma_rms, alone.noise.sigma_rms, 1e-9);  // (the sphere's vertices renumbered)
+  EXPECT_EQ(r.preset, alone.preset);
+  expect_same_parameters(denoise_parameters(), r.options, alone.options, "sphere + cube against the sphere");
+  EXPECT_NE(r.reason().find("without the 12 faces of 1 component(s) of fewer than 40 faces"), std::string::npos)
+      << r.reason();
+  // Measured whole, the cube would have been read as heavy noise.
+  EXPECT_GT(estimate_noise(both.V, both.F).sigma_rms, 3 * alone.noise.sigma_rms);
 }
 
 TEST(Presets, LargeMeshesAreMeasuredOnASampleWithTheSameFigures) {

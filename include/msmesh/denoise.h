@@ -42,6 +42,12 @@ struct DenoiseOptions {
   /// plateaus Algorithm 1 leaves in it (docs/presets.md, "Planar regions"). 0: off, as the paper
   /// (preset "paper").
   int plane_min_faces = 100;
+  /// Small components (NMSTV/MSTV): the vertex-connected components of fewer faces than this
+  /// are kept as they are, and the rest is denoised as a mesh of its own. On a part of a few
+  /// dozen triangles every face is a feature and the noise cannot be told from the shape (a
+  /// cube of 12 triangles beside a sphere came out with its corners moved by a third of its
+  /// side; docs/presets.md, "Small components"). 0: every component denoised, as the paper.
+  int min_component_faces = 40;
   void validate() const;
 };
 
@@ -56,6 +62,8 @@ struct DenoiseResult {
   Eigen::Index despiked_vertices = 0;  ///< vertices moved by DenoiseOptions::despike_threshold
   Eigen::Index planar_regions = 0;     ///< regions snapped to a plane (DenoiseOptions::plane_min_faces)
   Eigen::Index planar_faces = 0;       ///< faces in them
+  Eigen::Index kept_components = 0;    ///< components kept as they are (DenoiseOptions::min_component_faces)
+  Eigen::Index kept_faces = 0;         ///< faces in them
 };
 
 /// A lower estimate of the peak memory (bytes) denoise() needs for a mesh of this size,

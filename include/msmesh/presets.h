@@ -99,6 +99,10 @@ struct ResolvedPreset {
   /// Large meshes (auto): the faces measured, the cores of sample_patches patches spread over
   /// the mesh (0: the whole mesh was measured).
   Eigen::Index sample_faces = 0, sample_patches = 0;
+  /// Small components (auto, meshes measured whole): the faces of components of fewer than
+  /// DenoiseOptions::min_component_faces faces are not measured (denoise() keeps them as they
+  /// are, and the low pass would read their own shape as noise); how many, in how many.
+  Eigen::Index unmeasured_faces = 0, unmeasured_components = 0;
   DenoiseOptions options;  ///< the options
   /// Why: "chosen automatically: ..." (auto) or "requested".
   std::string reason() const;

@@ -131,6 +131,22 @@ def test_a_featureless_surface_is_reported():
     assert c["auto_featureless"] is False
 
 
+def test_small_components_are_kept_and_reported():
+    S, G = msmesh.make_shape("sphere", 8)
+    C, H = msmesh.make_shape("cube", 1)  # 12 triangles
+    V = np.vstack([S, C + [4.0, 0.0, 0.0]])
+    F = np.vstack([G, H + len(S)])
+    noisy = msmesh.add_noise(V, F, sigma=0.05, seed=3)
+    out, r = msmesh.denoise(noisy, F)
+    assert r["kept_components"] == 1 and r["kept_faces"] == 12
+    assert "without the 12 faces of 1 component(s)" in r["preset_reason"]
+    np.testing.assert_array_equal(out[len(S):], noisy[len(S):])
+    assert np.abs(out[: len(S)] - noisy[: len(S)]).max() > 1e-4
+    every, e = msmesh.denoise(noisy, F, min_component_faces=0)
+    assert e["kept_components"] == 0 and e["kept_faces"] == 0
+    assert np.abs(every[len(S):] - noisy[len(S):]).max() > 1e-4
+
+
 def test_correlated_noise_reads_scan_like(tmp_path):
     V, F = msmesh.make_shape("pyramid", 24)
     white = msmesh.add_noise(V, F, sigma=0.2, seed=11)

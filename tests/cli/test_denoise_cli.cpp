@@ -9,6 +9,7 @@
 
 #include "cli_helpers.h"
 #include "msmesh/io.h"
+#include "msmesh/shapes.h"
 
 using namespace msmesh;
 using msmesh::test::run_cli;
@@ -158,6 +159,34 @@ TEST(DenoiseCli, AFeaturelessSurfaceIsReported) {
   const auto creases = run_cli("denoise " + noisy + " -o " + out + " --json");
   ASSERT_EQ(creases.status, 0) << creases.out;
   EXPECT_NE(creases.out.find("\"auto_featureless\":false"), std::string::npos) << creases.out;
+}
+
+TEST(DenoiseCli, SmallComponentsAreKeptAndReported) {
+  // A sphere and a cube of 12 triangles beside it: the cube comes back as it was, the summary,
+  // the preset's reason and the JSON say so; --min-component-faces 0 denoises it too.
+  const TempDir d;
+  const std::string in = d.file("two.obj"), out = d.file("out.obj");
+  const Mesh m = test::noisy(test::join(make_sphere(3), make_cube(1), Eigen::RowVector3d(4, 0, 0)), 0.02, 7);
+  write_mesh(in, m);
+  const auto summary = run_cli("denoise " + in + " -o " + out);
+  ASSERT_EQ(summary.status, 0) << summary.out;
+  EXPECT_NE(summary.out.find("kept as they are: 1 component(s) of fewer than 40 faces (12 faces)"), std::string::npos)
+      << summary.out;
+  EXPECT_NE(summary.out.find("without the 12 faces of 1 component(s)"), std::string::npos) << summary.out;
+  const Mesh r = read_mesh(out);
+  const Eigen::Index n = m.V.rows();
+  EXPECT_LT((r.V.bottomRows(8) - m.V.bottomRows(8)).cwiseAbs().maxCoeff(), 1e-6);  // (as written to the OBJ)
+  EXPECT_GT((r.V.topRows(n - 8) - m.V.topRows(n - 8)).cwiseAbs().maxCoeff(), 1e-3);
+  const auto json = run_cli("denoise " + in + " -o " + out + " --json");
+  ASSERT_EQ(json.status, 0) << json.out;
+  EXPECT_NE(json.out.find("\"kept_components\":1,\"kept_faces\":12"), std::string::npos) << json.out;
+  const auto every = run_cli("denoise " + in + " -o " + out + " --json --min-component-faces 0");
+  ASSERT_EQ(every.status, 0) << every.out;
+  EXPECT_NE(every.out.find("\"kept_components\":0,\"kept_faces\":0"), std::string::npos) << every.out;
+  EXPECT_GT((read_mesh(out).V.bottomRows(8) - m.V.bottomRows(8)).cwiseAbs().maxCoeff(), 1e-3);
+  const auto bad = run_cli("denoise " + in + " -o " + out + " --min-component-faces -2");
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.out.find("min-component-faces"), std::string::npos) << bad.out;
 }
 
 TEST(DenoiseCli, PlanarRegionsAreReportedAndCanBeSwitchedOff) {
