@@ -124,7 +124,7 @@ constexpr double kDespikeFromOutliers = 0.03, kDespikeFromSigmaRms = 0.2, kDespi
 constexpr double kPolishFullSigma = 0.2, kPolishMinShare = 0.25, kPolishRangePerSigma = 1.5, kPolishRangeMin = 0.15;
 
 // Featureless smooth surfaces (docs/presets.md, "Featureless smooth surfaces"): a mesh the
-// shape rule classes smooth, not despiked, whose quadric ring excess (featureless.h) is below
+// shape rule classes smooth (after the spike removal, if any), whose quadric ring excess (featureless.h) is below
 // clamp(kFeaturelessPerSigma2 / σ_rms², kFeaturelessMin, kFeaturelessMax) — about half the least
 // that the organic meshes of ../shared read at that noise (0.24 at σ 0.11, 0.083 at 0.2, 0.051
 // at 0.3 and above), and more than spheres and tori read (0.04 at most) — is denoised as class
@@ -423,7 +423,7 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   r.choice = detail::choose_preset_masked(prefilter > 0 ? taubin_smooth(MV, SF, to) : MV, SF,
                                           sampled ? &sample.core_face : nullptr);
   r.preset = r.choice.preset;
-  if (r.preset == "smooth" && !r.despiked) {
+  if (r.preset == "smooth") {
     const detail::QuadricRingExcess q = detail::quadric_ring_excess(MV, SF);
     const double s2 = std::max(measured.sigma_rms * measured.sigma_rms, std::numeric_limits<double>::min());
     r.quadric_excess = q.excess;
@@ -434,7 +434,7 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   // The class smooth: the noise without the shape's own detail, and the detail kept (the class
   // was judged on the copy pre-filtered for σ_rms; the options may pre-filter less).
   double detail = 0;
-  if (r.preset == "smooth" && !r.despiked) {
+  if (r.preset == "smooth") {
     const double rms = measured.sigma_rms, d = measured.detail, n = kDetailDoubt * measured.sigma_noise;
     detail = std::sqrt(std::max(0.0, d * d - n * n));
     r.sigma = strength * std::sqrt(std::max(0.0, rms * rms - detail * detail));

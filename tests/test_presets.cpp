@@ -128,11 +128,15 @@ TEST(Presets, AutoRemovesSpikesUnderImpulsiveNoiseOnly) {
   EXPECT_GT(s.despiked_fraction, 0.05);
   // The rules take σ from the despiked mesh, which reads far less noisy than the spiky input.
   EXPECT_LT(s.noise_despiked.sigma_rms, 0.7 * s.noise.sigma_rms);
-  const NoiseEstimate& d = s.noise_despiked;
-  EXPECT_EQ(s.preset, "smooth");
-  const double detail2 = std::max(0.0, d.detail * d.detail - 0.25 * d.sigma_noise * d.sigma_noise);
-  EXPECT_DOUBLE_EQ(s.sigma, std::sqrt(std::max(0.0, d.sigma_rms * d.sigma_rms - detail2)));
+  // The despiked sphere is a featureless surface (docs/presets.md, "Featureless surfaces under
+  // impulsive noise"): class cad with the featureless options, σ the despiked mesh's.
+  EXPECT_EQ(s.choice.preset, "smooth");
+  EXPECT_TRUE(s.featureless) << s.reason();
+  EXPECT_EQ(s.preset, "cad");
+  EXPECT_EQ(s.options.vertices.omega2, 3);
+  EXPECT_DOUBLE_EQ(s.sigma, s.noise_despiked.sigma_rms);
   EXPECT_NE(s.reason().find("despiked at"), std::string::npos) << s.reason();
+  EXPECT_NE(s.reason().find("featureless, cad"), std::string::npos) << s.reason();
 }
 
 TEST(Presets, AdaptiveOptionsFollowTheNoise) {
