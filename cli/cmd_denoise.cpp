@@ -127,6 +127,7 @@ void run(const Args& a) {
     if (preset.automatic)
       j.add("auto_sharp_fraction", preset.choice.sharp_fraction)
           .add("auto_crease_line_fraction", preset.choice.crease_line_fraction)
+          .add("auto_steep_line_fraction", preset.choice.steep_line_fraction)
           .add("auto_flat_fraction", preset.choice.flat_fraction)
           .add("noise_sigma", preset.noise.sigma)
           .add("noise_sigma_rms", preset.noise.sigma_rms)

@@ -38,6 +38,13 @@ constexpr double kCadCreaseFraction = 0.03;  // cad when creases make at least t
 // directions, and an organic shape's fine detail make short scattered ones (docs/presets.md,
 // "Crease lines": sweep geometric mean 0.961x, 13 more cases below both baselines).
 constexpr double kCreaseLineMinEdges = 40.0;
+// ... or steep creases (a pre-smoothed dihedral above kSteepAngleDeg) on such lines at least
+// kCadSteepFraction of the edge length and kCadSteepShare of the creases on lines: fewer crease
+// lines, but a part's edges (grooves, the rims of a capped cylinder), where an organic shape's
+// long creases are mostly gentler folds (docs/presets.md, "Steep crease lines").
+constexpr double kSteepAngleDeg = 60.0;
+constexpr double kCadSteepFraction = 0.012;
+constexpr double kCadSteepShare = 0.8;
 constexpr double kCadFlatFraction = 0.5;  // ... or flat edges at least this much
 constexpr int kPreSmoothingPasses = 15;   // bilateral passes before measuring
 
@@ -254,6 +261,8 @@ PresetChoice detail::choose_preset_masked(const Eigen::MatrixXd& V, const Eigen:
   // arccosine per edge.
   const double cos_flat = std::cos(kFlatAngleDeg * M_PI / 180), cos_sharp = std::cos(kCreaseAngleDeg * M_PI / 180);
   std::vector<char> crease(static_cast<std::size_t>(t.num_edges()), 0);
+  std::vector<char> steep(static_cast<std::size_t>(t.num_edges()), 0);
+  const double cos_steep = std::cos(kSteepAngleDeg * M_PI / 180);
   const auto edge_sums =
       detail::deterministic_sums<4>(t.num_edges(), [&](Eigen::Index e0, Eigen::Index e1, std::array<double, 4>& s) {
         for (Eigen::Index e = e0; e < e1; ++e) {
@@ -266,6 +275,7 @@ PresetChoice detail::choose_preset_masked(const Eigen::MatrixXd& V, const Eigen:
             s[2] += len(e);
             crease[static_cast<std::size_t>(e)] = 1;
           }
+          if (d < cos_steep) steep[static_cast<std::size_t>(e)] = 1;
         }
       });
   const double total = edge_sums[0], flat = edge_sums[1], sharp = edge_sums[2];
@@ -283,6 +293,10 @@ PresetChoice detail::choose_preset_masked(const Eigen::MatrixXd& V, const Eigen:
                               ? detail::crease_line_length(t, len, crease, V.rows(), kCreaseLineMinEdges * mean_length,
                                                            measured ? &open : nullptr)
                               : 0;
+  const double steep_lines =
+      sharp > 0 ? detail::crease_line_length(t, len, steep, V.rows(), kCreaseLineMinEdges * mean_length,
+                                             measured ? &open : nullptr)
+                : 0;
   const auto face_sums = detail::deterministic_sums<2>(
       F.rows(),
       [&](Eigen::Index f0, Eigen::Index f1, std::array<double, 2>& s) {
@@ -299,12 +313,19 @@ PresetChoice detail::choose_preset_masked(const Eigen::MatrixXd& V, const Eigen:
   c.crease_line_fraction = total > 0 ? on_lines / total : 0;
   c.flat_fraction = total > 0 ? flat / total : 0;
   c.noise_level = measured_faces ? raw_dev / double(measured_faces) : 0;
-  const bool creases = c.crease_line_fraction >= kCadCreaseFraction, flats = c.flat_fraction >= kCadFlatFraction;
+  c.steep_line_fraction = total > 0 ? steep_lines / total : 0;
+  const bool steep_lines_rule =
+      c.steep_line_fraction >= kCadSteepFraction && c.steep_line_fraction >= kCadSteepShare * c.crease_line_fraction;
+  const bool creases = c.crease_line_fraction >= kCadCreaseFraction || steep_lines_rule;
+  const bool flats = c.flat_fraction >= kCadFlatFraction;
   c.preset = (creases || flats) ? "cad" : "smooth";
   c.reason = "crease fraction " + fixed(c.sharp_fraction, 3) + ", on lines of " + fixed(kCreaseLineMinEdges, 0) +
-             " edges or more " + fixed(c.crease_line_fraction, 3) + (creases ? " >= " : " < ") +
-             fixed(kCadCreaseFraction, 2) + ", flat fraction " + fixed(c.flat_fraction, 2) + (flats ? " >= " : " < ") +
-             fixed(kCadFlatFraction, 2) + (c.preset == "cad" ? ": cad" : ": smooth");
+             " edges or more " + fixed(c.crease_line_fraction, 3) +
+             (c.crease_line_fraction >= kCadCreaseFraction ? " >= " : " < ") + fixed(kCadCreaseFraction, 2) +
+             ", steeper than " + fixed(kSteepAngleDeg, 0) + " deg " + fixed(c.steep_line_fraction, 4) +
+             (steep_lines_rule ? " (>= " : " (not >= ") + fixed(kCadSteepFraction, 3) + " and " +
+             fixed(100 * kCadSteepShare, 0) + " % of those)" + ", flat fraction " + fixed(c.flat_fraction, 2) +
+             (flats ? " >= " : " < ") + fixed(kCadFlatFraction, 2) + (c.preset == "cad" ? ": cad" : ": smooth");
   return c;
 }
 

@@ -262,6 +262,32 @@ TEST(Presets, AutoIsInvariantUnderScaleRotationAndTranslation) {
   EXPECT_NEAR(a.flat_fraction, b.flat_fraction, 1e-9);
 }
 
+TEST(Presets, SteepCreaseLinesMakeAPartCad) {
+  // A capped cylinder: its two rims are its only creases (90°), too little of its edge length
+  // for the crease-line rule (< 0.03) and its caps too little for the flat rule, but all of
+  // them steep: class cad. A torus has none; a noisy one stays smooth by the shape rule.
+  const Mesh cylinder = make_shape("cylinder", 32);
+  for (const double sigma : {0.0, 0.1, 0.3}) {
+    NoiseOptions no;
+    no.sigma = sigma;
+    no.seed = 4;
+    const PresetChoice c = choose_preset(sigma > 0 ? add_noise(cylinder.V, cylinder.F, no) : cylinder.V, cylinder.F);
+    EXPECT_LT(c.crease_line_fraction, 0.03) << c.reason;
+    EXPECT_LT(c.flat_fraction, 0.5) << c.reason;
+    EXPECT_GE(c.steep_line_fraction, 0.012) << c.reason;
+    EXPECT_LE(c.steep_line_fraction, c.crease_line_fraction) << c.reason;
+    EXPECT_EQ(c.preset, "cad") << "sigma " << sigma << ": " << c.reason;
+    EXPECT_NE(c.reason.find("steeper than 60 deg"), std::string::npos) << c.reason;
+  }
+  const Mesh torus = make_shape("torus", 32);
+  NoiseOptions no;
+  no.sigma = 0.1;
+  no.seed = 4;
+  const PresetChoice t = choose_preset(add_noise(torus.V, torus.F, no), torus.F);
+  EXPECT_EQ(t.steep_line_fraction, 0) << t.reason;
+  EXPECT_EQ(t.preset, "smooth") << t.reason;
+}
+
 TEST(Presets, AutoDoesNotMeasureTheComponentsDenoiseKeeps) {
   // A noisy sphere and a cube of 12 triangles beside it: the low pass would read the cube's own
   // shape as noise (σ_rms ~1 where the sphere reads ~0.1); auto measures the sphere alone.

@@ -46,6 +46,9 @@ struct PresetChoice {
   /// The part of sharp_fraction on lines of creases at least 40 mean edge lengths long: what the
   /// class rule counts (noise and fine detail make short scattered creases).
   double crease_line_fraction = 0;
+  /// The part of crease_line_fraction steeper than 60° (a part's edges; an organic shape's long
+  /// creases are mostly gentler): cad when at least 0.012 and 80 % of crease_line_fraction.
+  double steep_line_fraction = 0;
   double flat_fraction = 0;  ///< fraction of edge length with dihedral < 1° after pre-smoothing
   double noise_level = 0;    ///< mean angle (radians) between input and pre-smoothed normals
   std::string reason;        ///< one line: the figures and the thresholds that decided

@@ -165,6 +165,7 @@ def _resolve_preset(V, F, preset, report, strength=1.0):
     if r["automatic"]:
         report["auto_sharp_fraction"] = r["sharp_fraction"]
         report["auto_crease_line_fraction"] = r["crease_line_fraction"]
+        report["auto_steep_line_fraction"] = r["steep_line_fraction"]
         report["auto_flat_fraction"] = r["flat_fraction"]
         report["auto_noise_level"] = r["noise_level"]
         for key in (
@@ -216,7 +217,7 @@ def taubin_smooth(V: ArrayLike, F: ArrayLike, iterations: int = 10, lambda_: flo
 
 def choose_preset(V: ArrayLike, F: ArrayLike) -> Dict[str, Any]:
     """The preset 'auto' picks for a mesh: dict(preset, sharp_fraction, crease_line_fraction,
-    flat_fraction, noise_level, reason)."""
+    steep_line_fraction, flat_fraction, noise_level, reason)."""
     V, F = _checks.mesh(V, F)
     return _core.choose_preset(V, F)
 

@@ -75,6 +75,7 @@ py::dict choose_preset_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& 
   d["preset"] = c.preset;
   d["sharp_fraction"] = c.sharp_fraction;
   d["crease_line_fraction"] = c.crease_line_fraction;
+  d["steep_line_fraction"] = c.steep_line_fraction;
   d["flat_fraction"] = c.flat_fraction;
   d["noise_level"] = c.noise_level;
   d["reason"] = c.reason;

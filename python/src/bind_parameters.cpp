@@ -127,6 +127,7 @@ py::dict resolve_preset_binding(const std::string& name, const Eigen::MatrixXd& 
   if (r.automatic) {
     d["sharp_fraction"] = r.choice.sharp_fraction;
     d["crease_line_fraction"] = r.choice.crease_line_fraction;
+    d["steep_line_fraction"] = r.choice.steep_line_fraction;
     d["flat_fraction"] = r.choice.flat_fraction;
     d["noise_level"] = r.choice.noise_level;
     d["noise_sigma"] = r.noise.sigma;

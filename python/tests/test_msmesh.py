@@ -106,6 +106,7 @@ def test_noise_estimate_and_strength(noisy_fandisk):
     assert r["noise_sigma_noise"] == pytest.approx(e["sigma_noise"]) and r["noise_detail"] == pytest.approx(e["detail"])
     assert "noise sigma" in r["preset_reason"]
     assert 0 <= r["auto_crease_line_fraction"] <= r["auto_sharp_fraction"]
+    assert 0 <= r["auto_steep_line_fraction"] <= r["auto_crease_line_fraction"]
     _, r2 = msmesh.denoise(V, F, strength=3.0)
     assert r2["noise_level_used"] == pytest.approx(3.0 * r["noise_level_used"])
     assert r2["parameters"]["alpha"] <= r["parameters"]["alpha"]
