@@ -131,12 +131,13 @@ constexpr double kDespikeFromOutliers = 0.03, kDespikeFromSigmaRms = 0.2, kDespi
 constexpr double kPolishFullSigma = 0.2, kPolishMinShare = 0.25, kPolishRangePerSigma = 1.5, kPolishRangeMin = 0.15;
 
 // Featureless smooth surfaces (docs/presets.md, "Featureless smooth surfaces"): a mesh the
-// shape rule classes smooth (after the spike removal, if any), whose quadric ring excess (featureless.h) is below
-// clamp(kFeaturelessPerSigma2 / σ_rms², kFeaturelessMin, kFeaturelessMax) — about half the least
-// that the organic meshes of ../shared read at that noise (0.24 at σ 0.11, 0.083 at 0.2, 0.051
-// at 0.3 and above), and more than spheres and tori read (0.04 at most) — is denoised as class
-// cad with a strong polish: on such a surface the class smooth's early-stopped TV flow leaves
-// most of the noise, and the polish's screened smoothing of the normals is the better filter.
+// shape rule classes smooth (after the spike removal, if any), whose quadric ring excess
+// (featureless.h) is below clamp(kFeaturelessPerSigma2 / σ_rms², kFeaturelessMin,
+// kFeaturelessMax) — about half the least that the organic meshes of ../shared read at that
+// noise (0.24 at σ 0.11, 0.083 at 0.2, 0.051 at 0.3 and above), and more than spheres and tori
+// read (0.04 at most) — is denoised as class cad with a strong polish: on such a surface the
+// class smooth's early-stopped TV flow leaves most of the noise, and the polish's screened
+// smoothing of the normals is the better filter.
 constexpr double kFeaturelessPerSigma2 = 0.0016, kFeaturelessMin = 0.03, kFeaturelessMax = 0.3;
 constexpr double kFeaturelessPolish = 100.0, kFeaturelessPolishRange = 1.0;
 //   Its vertex update: the class cad's closeness ω₃ without the low-noise gain (which keeps

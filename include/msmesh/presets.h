@@ -91,11 +91,11 @@ struct ResolvedPreset {
   /// as a scan with correlated noise, whose fidelity α keeps the lower cap and whose detail counts
   /// as noise in full (detail_as_noise 1; docs/presets.md, "Correlated noise").
   bool scan_like = false;
-  /// Class smooth by the shape rule (auto; of the despiked mesh when despiked): the quadric ring excess of the mesh
-  /// (0 for white noise on a smooth surface, larger with detail) and the limit below which it
-  /// is called featureless, clamp(0.0016 / σ_rms², 0.03, 0.3) (0: not measured). A featureless
-  /// mesh is denoised as class cad with polish 100, range 1, ω₃ 0.1 and ω₂ 3 (docs/presets.md,
-  /// "Featureless smooth surfaces").
+  /// Class smooth by the shape rule (auto; measured on the despiked mesh when despiked): the
+  /// quadric ring excess of the mesh (0 for white noise on a smooth surface, larger with detail)
+  /// and the limit below which it is called featureless, clamp(0.0016 / σ_rms², 0.03, 0.3) (0:
+  /// not measured). A featureless mesh is denoised as class cad with polish 100, range 1, ω₃ 0.1
+  /// and ω₂ 3 (docs/presets.md, "Featureless smooth surfaces").
   double quadric_excess = 0, featureless_limit = 0;
   bool featureless = false;
 
