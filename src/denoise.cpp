@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "jet_targets.h"
 #include "mesh_components.h"
 #include "msmesh/despike.h"
 #include "msmesh/errors.h"
@@ -77,6 +78,7 @@ void DenoiseOptions::validate() const {
     check_parameter(find_parameter(denoise_parameters(), "prefilter")->info, prefilter_iterations);
     check_parameter(find_parameter(denoise_parameters(), "despike")->info, despike_threshold);
     check_parameter(find_parameter(denoise_parameters(), "planes")->info, plane_min_faces);
+    check_parameter(find_parameter(denoise_parameters(), "jet-rings")->info, jet_rings);
     check_parameter(find_parameter(denoise_parameters(), "min-component-faces")->info, min_component_faces);
   }
 }
@@ -106,6 +108,7 @@ void put_back(const DenoiseResult& part, const detail::SubMesh& sub, const std::
   r.despiked_vertices += part.despiked_vertices;
   r.planar_regions += part.planar_regions;
   r.planar_faces += part.planar_faces;
+  r.jet_faces += part.jet_faces;
 }
 
 /// The result of denoising some groups of faces (each group on its own, with its own scale
@@ -205,7 +208,24 @@ DenoiseResult denoise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
   r.edges = std::move(nr.edges);
   r.normal_report = std::move(static_cast<NormalFilterStats&>(nr));
   const auto t1 = clock::now();
-  VertexUpdateResult vr = update_vertices(mesh, r.normals, r.v.cwiseMax(0.0).cwiseMin(1.0), o.vertices, {}, progress);
+  const Eigen::VectorXd v01 = r.v.cwiseMax(0.0).cwiseMin(1.0);
+  VertexUpdateResult vr = update_vertices(mesh, r.normals, v01, o.vertices, {}, progress);
+  if (o.jet_rings > 0) {
+    // Second-order targets from the first update's positions, and a second update from there.
+    const Eigen::MatrixXd X = (vr.V.rowwise() - mesh.center()) / mesh.scale();
+    r.jet_faces = detail::fit_jet_targets(mesh, X, r.normals, o.jet_rings, planes.snapped).faces;
+    if (r.jet_faces > 0) {
+      VertexUpdateWeights from_first;
+      from_first.start = std::move(vr.V);
+      VertexUpdateResult second = update_vertices(mesh, r.normals, v01, o.vertices, from_first, progress);
+      // One report for both: iterations and histories one after the other.
+      second.iterations += vr.iterations;
+      second.change_history.insert(second.change_history.begin(), vr.change_history.begin(), vr.change_history.end());
+      second.solver_iterations.insert(second.solver_iterations.begin(), vr.solver_iterations.begin(),
+                                      vr.solver_iterations.end());
+      vr = std::move(second);
+    }
+  }
   r.V = std::move(vr.V);
   r.vertex_report = std::move(static_cast<VertexUpdateStats&>(vr));
   keep_unreferenced(V, F, r.V);

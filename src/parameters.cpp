@@ -284,6 +284,12 @@ const ParameterTable<DenoiseOptions>& denoise_parameters() {
                               "plane's (neighbours within 1°, all within 4° of their mean; 0: off, as the paper)",
                               kNormals),
                       &O::plane_min_faces));
+    t.push_back(field(integer("jet-rings", "", closed(0, 10),
+                              "rings of the quadrics fitted to the updated vertices whose normals become the "
+                              "targets of faces on curved parts (not across creases, not inside flat plateaus) "
+                              "for a second vertex update (0: off, as the paper)",
+                              kNormals),
+                      &O::jet_rings));
     t.push_back(field(integer("min-component-faces", "", closed(0, 2147483647),
                               "components (vertex-connected) of fewer faces are kept as they are: too few to tell "
                               "noise from shape (0: every component denoised, as the paper)",

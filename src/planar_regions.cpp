@@ -17,7 +17,9 @@ namespace msmesh::detail {
 PlanarRegions snap_planar_regions(const PreparedMesh& mesh, Eigen::MatrixXd& N, int min_faces) {
   PlanarRegions out;
   const Eigen::Index nf = mesh.num_faces();
-  if (min_faces <= 0 || nf < min_faces) return out;
+  if (min_faces <= 0) return out;
+  out.snapped.assign(static_cast<std::size_t>(nf), false);
+  if (nf < min_faces) return out;
   const Topology& t = mesh.topology();
   const Eigen::MatrixXi& F = mesh.faces();
   const Eigen::MatrixXd& X = mesh.positions();
@@ -71,7 +73,10 @@ PlanarRegions snap_planar_regions(const PreparedMesh& mesh, Eigen::MatrixXd& N, 
     if (eig.info() != Eigen::Success) continue;
     Eigen::RowVector3d plane = eig.eigenvectors().col(0).transpose();  // the smallest eigenvalue's
     if (plane.dot(mean) < 0) plane = -plane;
-    for (const int* f = begin; f != end; ++f) N.row(*f) = plane;
+    for (const int* f = begin; f != end; ++f) {
+      N.row(*f) = plane;
+      out.snapped[static_cast<std::size_t>(*f)] = true;
+    }
     ++out.regions;
     out.faces += end - begin;
   }

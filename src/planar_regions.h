@@ -1,6 +1,7 @@
 // Internal: planar regions of the filtered normals, snapped to their fitted planes (denoise.cpp).
 #pragma once
 #include <Eigen/Core>
+#include <vector>
 
 #include "msmesh/prepared_mesh.h"
 
@@ -13,8 +14,9 @@ constexpr double kPlaneSpreadDeg = 4.0;
 
 /// What snap_planar_regions did.
 struct PlanarRegions {
-  Eigen::Index regions = 0;  ///< regions snapped
-  Eigen::Index faces = 0;    ///< faces in them
+  Eigen::Index regions = 0;   ///< regions snapped
+  Eigen::Index faces = 0;     ///< faces in them
+  std::vector<bool> snapped;  ///< #F: whether the face is in one of them (empty when min_faces <= 0)
 };
 
 /// Finds the connected regions of faces (across interior edges) whose normals N agree: each

@@ -201,6 +201,7 @@ DenoiseOptions preset_options(const std::string& name) {
     o.vertices.acceleration = 0;                                      // Algorithm 2's plain alternation
     o.normals.polish = 0;                                             // Algorithm 1's normals as they come
     o.plane_min_faces = 0;                                            // and no planar regions
+    o.jet_rings = 0;                                                  // nor jet-fitted targets
     o.min_component_faces = 0;                                        // every component denoised
     o.normals.solver_tolerance = o.vertices.solver_tolerance = 1e-8;  // exact solves, as the paper's
     return o;
@@ -353,6 +354,7 @@ std::string ResolvedPreset::reason() const {
   const std::string tangential = options.vertices.fairness_tangential < 1
                                      ? ", fairness along the surface " + fixed(options.vertices.fairness_tangential, 2)
                                      : "";
+  const std::string jets = options.jet_rings > 0 ? "" : ", no jet-fitted targets (long waves of noise)";
   const std::string cap =
       scan_like  ? " (at most " + fixed(kAlphaMaxScanLike, 0) + ": scan-like, few creases and more detail than noise)"
       : despiked ? " (at most " + fixed(kAlphaMaxScanLike, 0) + " after the spike removal)"
@@ -368,7 +370,7 @@ std::string ResolvedPreset::reason() const {
                                 : "";
   return "chosen automatically (" + sampled + small + noise.summary() + spikes + s + detail + ": alpha " +
          fixed(options.normals.alpha, 2) + cap + ", prefilter " + std::to_string(options.prefilter_iterations) +
-         polish + tangential + "; " + choice.reason + quadric + ")";
+         polish + tangential + jets + "; " + choice.reason + quadric + ")";
 }
 
 ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
@@ -478,6 +480,9 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   }
   r.options = adaptive_options(r.preset, r.sigma, detail, r.scan_like || r.despiked ? kAlphaMaxScanLike : 0.0);
   if (r.despiked) r.options.despike_threshold = kDespikeThreshold;
+  // Where detail is taken for correlated noise, the first update's positions keep long waves
+  // that quadrics would follow (docs/presets.md, "Jet-fitted targets").
+  if (r.detail_as_noise > 0) r.options.jet_rings = 0;
   if (r.featureless) {
     r.options.normals.polish = kFeaturelessPolish;
     r.options.normals.polish_range = kFeaturelessPolishRange;

@@ -269,6 +269,8 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
   const Eigen::Index ne = topo.num_edges();
   Eigen::VectorXd v = v_in.size() ? v_in : Eigen::VectorXd::Ones(ne);
   if (v.size() != ne) throw InvalidInput("vertex update: edge field v must have one value per edge");
+  if (weights.start.size() && (weights.start.rows() != nv || weights.start.cols() != 3 || !weights.start.allFinite()))
+    throw InvalidInput("vertex update: start must be #V by 3 finite positions");
   Eigen::VectorXd w3 = Eigen::VectorXd::Ones(nv);
   if (weights.vertex_omega3.size()) {
     if (weights.vertex_omega3.size() != nv) throw InvalidInput("vertex update: vertex_omega3 must have #V entries");
@@ -336,6 +338,11 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
   Rows X(nv, 3);  // the iterate, from the input positions (allocated after the assembly's scratch is freed)
   detail::parallel_for(nv, [&](Eigen::Index i) { X.row(i) = mesh.positions().row(input_vertex(i)); });
   const Rows rhs0 = d3.asDiagonal() * X;
+  if (weights.start.size()) {
+    const double inv = 1.0 / mesh.scale();
+    detail::parallel_for(
+        nv, [&](Eigen::Index i) { X.row(i) = (weights.start.row(input_vertex(i)) - mesh.center()) * inv; });
+  }
 
   // X is the iterate x_k, G = G(x_k) the positions one P-step and V-step make of it; the plain
   // alternation takes x_{k+1} = G, the accelerated one combines G with the last iterations'.

@@ -42,6 +42,13 @@ struct DenoiseOptions {
   /// plateaus Algorithm 1 leaves in it (docs/presets.md, "Planar regions"). 0: off, as the paper
   /// (preset "paper").
   int plane_min_faces = 100;
+  /// Jet-fitted targets (NMSTV/MSTV): when > 0, after the vertex update each face on a curved
+  /// part (not across a crease, not inside a flat plateau) gets as its target the normal of a
+  /// quadric fitted to the updated vertices within this many rings of it, and the vertex update
+  /// runs again from there: second-order targets where Algorithm 1's piecewise constant normals
+  /// leave facets (docs/presets.md, "Jet-fitted targets"). 0: off, as the paper (preset
+  /// "paper"); "auto" turns it off where it counts detail as correlated noise.
+  int jet_rings = 3;
   /// Small components (NMSTV/MSTV): the vertex-connected components of fewer faces than this
   /// are kept as they are, and the rest is denoised as a mesh of its own. On a part of a few
   /// dozen triangles every face is a feature and the noise cannot be told from the shape (a
@@ -62,6 +69,7 @@ struct DenoiseResult {
   Eigen::Index despiked_vertices = 0;  ///< vertices moved by DenoiseOptions::despike_threshold
   Eigen::Index planar_regions = 0;     ///< regions snapped to a plane (DenoiseOptions::plane_min_faces)
   Eigen::Index planar_faces = 0;       ///< faces in them
+  Eigen::Index jet_faces = 0;          ///< faces given jet-fitted targets (DenoiseOptions::jet_rings)
   Eigen::Index kept_components = 0;    ///< components kept as they are (DenoiseOptions::min_component_faces)
   Eigen::Index kept_faces = 0;         ///< faces in them
 };

@@ -38,6 +38,7 @@ py::dict denoise_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, con
   d["despiked_vertices"] = static_cast<long long>(r.despiked_vertices);
   d["planar_regions"] = static_cast<long long>(r.planar_regions);
   d["planar_faces"] = static_cast<long long>(r.planar_faces);
+  d["jet_faces"] = static_cast<long long>(r.jet_faces);
   d["kept_components"] = static_cast<long long>(r.kept_components);
   d["kept_faces"] = static_cast<long long>(r.kept_faces);
   return d;

@@ -148,6 +148,19 @@ def test_small_components_are_kept_and_reported():
     assert np.abs(every[len(S):] - noisy[len(S):]).max() > 1e-4
 
 
+def test_jet_fitted_targets_are_reported():
+    V, F = msmesh.make_shape("torus", 16)
+    noisy = msmesh.add_noise(V, F, sigma=0.1, seed=3)
+    out, r = msmesh.denoise(noisy, F)
+    assert r["jet_faces"] > len(F) // 2
+    assert r["parameters"]["jet_rings"] == 3
+    off, o = msmesh.denoise(noisy, F, jet_rings=0)
+    assert o["jet_faces"] == 0
+    err = msmesh.evaluate(out, F, V, F)["msae"]
+    err_off = msmesh.evaluate(off, F, V, F)["msae"]
+    assert err < err_off, (err, err_off)
+
+
 def test_correlated_noise_reads_scan_like(tmp_path):
     V, F = msmesh.make_shape("pyramid", 24)
     white = msmesh.add_noise(V, F, sigma=0.2, seed=11)
@@ -181,7 +194,9 @@ def test_denoise_report(noisy_fandisk):
     assert V_new.shape == V.shape and V_new.dtype == np.float64 and V_new.flags.c_contiguous
     assert r["normals"].shape == F.shape
     assert r["v"].shape == (r["edges"].shape[0],)
-    assert 1 <= r["normal_iterations"] <= 10 and 1 <= r["vertex_iterations"] <= 10
+    assert 1 <= r["normal_iterations"] <= 10
+    # at most 10 per vertex update: one more after jet-fitted targets
+    assert 1 <= r["vertex_iterations"] <= (20 if r["jet_faces"] else 10)
     assert len(r["residual_history"]) == r["normal_iterations"]
     assert len(r["vertex_change_history"]) == r["vertex_iterations"]
     assert r["parameters"]["normal_iterations"] == 10
@@ -207,8 +222,9 @@ def test_filter_then_update_matches_denoise(noisy_fandisk):
     params = {"normal_iterations": 8}
     N, v, nr = msmesh.filter_normals(V, F, preset="cad", **params)
     V_two, vr = msmesh.update_vertices(V, F, N, np.clip(v, 0, 1), preset="cad", vertex_iterations=6)
-    # (planes=0: denoise's planar regions, between the two stages, would change the targets)
-    V_one, r = msmesh.denoise(V, F, preset="cad", vertex_iterations=6, planes=0, **params)
+    # (planes=0, jet_rings=0: denoise's planar regions and jet-fitted targets, between and
+    # after the two stages, would change the targets)
+    V_one, r = msmesh.denoise(V, F, preset="cad", vertex_iterations=6, planes=0, jet_rings=0, **params)
     assert_close_relative(N, r["normals"])
     assert_close_relative(V_two, V_one)
     assert nr["normal_iterations"] == r["normal_iterations"]

@@ -189,6 +189,36 @@ TEST(DenoiseCli, SmallComponentsAreKeptAndReported) {
   EXPECT_NE(bad.out.find("min-component-faces"), std::string::npos) << bad.out;
 }
 
+TEST(DenoiseCli, JetFittedTargetsAreReportedAndCanBeSwitchedOff) {
+  // A noisy torus is curved everywhere: the defaults give most of its faces jet-fitted targets
+  // (--jet-rings 3), and the JSON and the summary say how many; --jet-rings 0, preset paper and
+  // auto on correlated noise (its long waves are what a quadric would follow) give none.
+  const TempDir d;
+  const std::string clean = d.file("torus.obj"), noisy = d.file("noisy.obj"), out = d.file("out.obj");
+  ASSERT_NO_FATAL_FAILURE(noisy_shape("torus --resolution 16", "--sigma 0.1 --seed 3", clean, noisy));
+  const auto on = run_cli("denoise " + noisy + " -o " + out + " --json");
+  ASSERT_EQ(on.status, 0) << on.out;
+  EXPECT_EQ(on.out.find("\"jet_faces\":0,"), std::string::npos) << on.out;
+  EXPECT_NE(on.out.find("\"jet_faces\":"), std::string::npos) << on.out;
+  const auto summary = run_cli("denoise " + noisy + " -o " + out);
+  ASSERT_EQ(summary.status, 0) << summary.out;
+  EXPECT_NE(summary.out.find("jet-fitted:"), std::string::npos) << summary.out;
+  for (const std::string extra : {"--jet-rings 0", "--preset paper"}) {
+    const auto off = run_cli("denoise " + noisy + " -o " + out + " --json " + extra);
+    ASSERT_EQ(off.status, 0) << off.out;
+    EXPECT_NE(off.out.find("\"jet_faces\":0,"), std::string::npos) << extra << ": " << off.out;
+  }
+  const std::string waves = d.file("waves.obj");
+  ASSERT_NO_FATAL_FAILURE(noisy_shape("cube --resolution 24", "--sigma 0.3 --correlation 3 --seed 17", clean, waves));
+  const auto scan = run_cli("denoise " + waves + " -o " + out + " --json");
+  ASSERT_EQ(scan.status, 0) << scan.out;
+  EXPECT_NE(scan.out.find("\"jet_faces\":0,"), std::string::npos) << scan.out;
+  EXPECT_NE(scan.out.find("no jet-fitted targets (long waves of noise)"), std::string::npos) << scan.out;
+  const auto bad = run_cli("denoise " + noisy + " -o " + out + " --jet-rings 11");
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.out.find("jet-rings"), std::string::npos) << bad.out;
+}
+
 TEST(DenoiseCli, PlanarRegionsAreReportedAndCanBeSwitchedOff) {
   // A noisy cube's sides are planar regions of the filtered normals (--planes 100, the default):
   // the JSON and the summary say how many were snapped; --planes 0 and preset paper snap none.
