@@ -212,8 +212,9 @@ DenoiseResult denoise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
   VertexUpdateResult vr = update_vertices(mesh, r.normals, v01, o.vertices, {}, progress);
   if (o.jet_rings > 0) {
     // Second-order targets from the first update's positions, and a second update from there.
-    const Eigen::MatrixXd X = (vr.V.rowwise() - mesh.center()) / mesh.scale();
-    r.jet_faces = detail::fit_jet_targets(mesh, X, r.normals, o.jet_rings, planes.snapped).faces;
+    r.jet_faces = detail::fit_jet_targets(mesh, (vr.V.rowwise() - mesh.center()) / mesh.scale(), r.normals, o.jet_rings,
+                                          planes.snapped)
+                      .faces;
     if (r.jet_faces > 0) {
       VertexUpdateWeights from_first;
       from_first.start = std::move(vr.V);
