@@ -19,6 +19,7 @@
 #include "msmesh/taubin.h"
 #include "msmesh/topology.h"
 #include "planar_regions.h"
+#include "retargeted_update.h"
 #include "sub_mesh.h"
 
 namespace msmesh {
@@ -208,25 +209,18 @@ DenoiseResult denoise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
   r.edges = std::move(nr.edges);
   r.normal_report = std::move(static_cast<NormalFilterStats&>(nr));
   const auto t1 = clock::now();
-  const Eigen::VectorXd v01 = r.v.cwiseMax(0.0).cwiseMin(1.0);
-  VertexUpdateResult vr = update_vertices(mesh, r.normals, v01, o.vertices, {}, progress);
-  if (o.jet_rings > 0) {
-    // Second-order targets from the first update's positions, and a second update from there.
-    r.jet_faces = detail::fit_jet_targets(mesh, (vr.V.rowwise() - mesh.center()) / mesh.scale(), r.normals, o.jet_rings,
-                                          planes.snapped)
-                      .faces;
-    if (r.jet_faces > 0) {
-      VertexUpdateWeights from_first;
-      from_first.start = std::move(vr.V);
-      VertexUpdateResult second = update_vertices(mesh, r.normals, v01, o.vertices, from_first, progress);
-      // One report for both: iterations and histories one after the other.
-      second.iterations += vr.iterations;
-      second.change_history.insert(second.change_history.begin(), vr.change_history.begin(), vr.change_history.end());
-      second.solver_iterations.insert(second.solver_iterations.begin(), vr.solver_iterations.begin(),
-                                      vr.solver_iterations.end());
-      vr = std::move(second);
-    }
-  }
+  // Jet-fitted targets: after the update, second-order targets from its positions, and the
+  // update again from there on the system it built.
+  detail::Retarget jets;
+  if (o.jet_rings > 0)
+    jets = [&](const Eigen::MatrixXd& X, Eigen::MatrixXd& N) {
+      r.jet_faces = detail::fit_jet_targets(mesh, X, N, o.jet_rings, planes.snapped).faces;
+      if (r.jet_faces == 0) return false;
+      r.normals = N;  // the result's targets (the update read its first ones already)
+      return true;
+    };
+  VertexUpdateResult vr = detail::update_vertices_retargeted(mesh, r.normals, r.v.cwiseMax(0.0).cwiseMin(1.0),
+                                                             o.vertices, {}, progress, jets);
   r.V = std::move(vr.V);
   r.vertex_report = std::move(static_cast<VertexUpdateStats&>(vr));
   keep_unreferenced(V, F, r.V);

@@ -16,6 +16,7 @@
 #include "msmesh/topology.h"
 #include "parallel.h"
 #include "pcg.h"
+#include "retargeted_update.h"
 #include "sparse_build.h"
 #include "sparse_solve.h"
 
@@ -258,19 +259,26 @@ VertexUpdateResult update_vertices(const Eigen::MatrixXd& V, const Eigen::Matrix
   return update_vertices(PreparedMesh(V, F, "vertex update"), N, v, o, weights, progress);
 }
 
-VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::MatrixXd& N, const Eigen::VectorXd& v_in,
+VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::MatrixXd& N, const Eigen::VectorXd& v,
                                    const VertexUpdateOptions& o, const VertexUpdateWeights& weights,
                                    const ProgressCallback& progress) {
+  return detail::update_vertices_retargeted(mesh, N, v, o, weights, progress, {});
+}
+
+VertexUpdateResult detail::update_vertices_retargeted(const PreparedMesh& mesh, const Eigen::MatrixXd& N_in,
+                                                      const Eigen::VectorXd& v_in, const VertexUpdateOptions& o,
+                                                      const VertexUpdateWeights& weights,
+                                                      const ProgressCallback& progress, const Retarget& retarget) {
   o.validate();
   const Eigen::MatrixXi& F = mesh.faces();
   const Eigen::Index nv = mesh.num_vertices(), nf = mesh.num_faces();
-  if (N.rows() != nf || N.cols() != 3) throw InvalidInput("vertex update: target normals must be #F by 3");
+  if (N_in.rows() != nf || N_in.cols() != 3) throw InvalidInput("vertex update: target normals must be #F by 3");
+  Eigen::MatrixXd retargeted;  // the targets `retarget` makes (empty until it runs)
+  const Eigen::MatrixXd* targets = &N_in;
   const Topology& topo = mesh.topology();
   const Eigen::Index ne = topo.num_edges();
   Eigen::VectorXd v = v_in.size() ? v_in : Eigen::VectorXd::Ones(ne);
   if (v.size() != ne) throw InvalidInput("vertex update: edge field v must have one value per edge");
-  if (weights.start.size() && (weights.start.rows() != nv || weights.start.cols() != 3 || !weights.start.allFinite()))
-    throw InvalidInput("vertex update: start must be #V by 3 finite positions");
   Eigen::VectorXd w3 = Eigen::VectorXd::Ones(nv);
   if (weights.vertex_omega3.size()) {
     if (weights.vertex_omega3.size() != nv) throw InvalidInput("vertex update: vertex_omega3 must have #V entries");
@@ -326,31 +334,31 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
   // A fairness along the normals keeps the quads for its Q-step; else the quads (~80 MB at a
   // million faces), and the matrix when it is factored, are freed before the iterations' arrays
   // are allocated; CG takes the matrix's arrays over.
+  // The matrix reads the targets only through the fairness along the normals: built again for
+  // new targets only then.
   const bool along_normals = o.omega2 > 0 && o.fairness_tangential < 1;
-  EdgeQuads eq =
-      o.omega2 > 0 ? edge_quads(Fw, topo, renumber, v, nv, along_normals ? N : Eigen::MatrixXd()) : EdgeQuads{};
-  SparseMatrix A_v = v_step_matrix(Fw, vc, eq, d3, o);
-  if (!along_normals) eq = EdgeQuads();
-  const detail::ConstantSystem v_step =
-      use_cg ? detail::ConstantSystem(std::move(A_v), "vertex update")
-             : detail::ConstantSystem(A_v, detail::ConstantSystem::Method::Cholesky, "vertex update");
-  A_v = SparseMatrix();
+  EdgeQuads eq;
+  std::optional<detail::ConstantSystem> v_step_system;
+  const auto assemble = [&] {
+    eq = o.omega2 > 0 ? edge_quads(Fw, topo, renumber, v, nv, along_normals ? *targets : Eigen::MatrixXd())
+                      : EdgeQuads{};
+    SparseMatrix A_v = v_step_matrix(Fw, vc, eq, d3, o);
+    if (!along_normals) eq = EdgeQuads();
+    v_step_system.reset();
+    if (use_cg)
+      v_step_system.emplace(std::move(A_v), "vertex update");
+    else
+      v_step_system.emplace(A_v, detail::ConstantSystem::Method::Cholesky, "vertex update");
+  };
+  assemble();
   Rows X(nv, 3);  // the iterate, from the input positions (allocated after the assembly's scratch is freed)
   detail::parallel_for(nv, [&](Eigen::Index i) { X.row(i) = mesh.positions().row(input_vertex(i)); });
   const Rows rhs0 = d3.asDiagonal() * X;
-  if (weights.start.size()) {
-    const double inv = 1.0 / mesh.scale();
-    detail::parallel_for(
-        nv, [&](Eigen::Index i) { X.row(i) = (weights.start.row(input_vertex(i)) - mesh.center()) * inv; });
-  }
 
   // X is the iterate x_k, G = G(x_k) the positions one P-step and V-step make of it; the plain
   // alternation takes x_{k+1} = G, the accelerated one combines G with the last iterations'.
   // The move of an iteration is ‖G(x_k) − x_k‖ either way (the plain alternation's step).
   Rows X_old, G(nv, 3), rhs(nv, 3), P(3 * nf, 3), Q(along_normals ? static_cast<Eigen::Index>(eq.quad.size()) : 0, 3);
-  std::optional<detail::AndersonAcceleration> accelerate;
-  if (o.acceleration > 0) accelerate.emplace(o.acceleration);
-  double last_change = std::numeric_limits<double>::infinity();
   // Inexact V-steps, as the normal filter's N-steps: while the vertices still move, CG solves a
   // V-step only until its error is a small fraction of the last move. The matrix is at least
   // ω₃·min(w₃) I, so a residual r moves the solution by at most ‖r‖ / (ω₃ min w₃): a relative
@@ -362,58 +370,78 @@ VertexUpdateResult update_vertices(const PreparedMesh& mesh, const Eigen::Matrix
   // "Issue 20, eleventh round"). A tolerance below kLooseSolvesFromTolerance (preset paper's)
   // solves every V-step to it.
   constexpr double kInexactFraction = 0.03, kInexactMax = 1e-4;
-  const bool inexact = v_step.iterative() && o.solver_tolerance >= detail::kLooseSolvesFromTolerance;
+  const bool inexact = v_step_system->iterative() && o.solver_tolerance >= detail::kLooseSolvesFromTolerance;
   const double closeness_min = d3.minCoeff();
-  for (int k = 0; k < o.max_iterations; ++k) {
-    const Eigen::Index fallbacks = p_step(Fw, X, N, P);
-    if (along_normals) q_step(eq, X, o.omega2, o.fairness_tangential, Q);
-    v_step_rhs(rhs0, P, vc, o.omega1, along_normals ? &eq : nullptr, Q, rhs);
-    // CG's warm start: in the plain alternation the secant x_k + (x_k − x_{k−1}) (the vertices
-    // move smoothly from one iteration to the next: about a fifth fewer sweeps, Cone 1153 →
-    // 940); the accelerated iterate x_k itself, already an extrapolation. Only the starting
-    // point changes, not the solution.
-    if (v_step.iterative()) {
-      if (!accelerate && k >= 1)
-        G = X + (X - X_old);
-      else
-        G = X;
+  // The positions in the input's numbering, normalised units.
+  const auto positions = [&] {
+    Eigen::MatrixXd V(nv, 3);
+    detail::parallel_for(nv, [&](Eigen::Index i) { V.row(input_vertex(i)) = X.row(i); });
+    return V;
+  };
+  // One run of the alternation, or two when `retarget` changes the targets after the first: the
+  // second starts from the first's result, afresh (no history, no last move) but with its system.
+  for (int run = 0, done = 0; run < 2; ++run) {
+    if (run == 1) {
+      if (!retarget) break;
+      retargeted = *targets;
+      if (!retarget(positions(), retargeted)) break;
+      targets = &retargeted;
+      if (along_normals) assemble();
     }
-    double tolerance = o.solver_tolerance;
-    if (inexact) {
-      const double bound = std::isfinite(last_change) ? kInexactFraction * last_change * closeness_min *
-                                                            std::sqrt(double(nv)) / frobenius_norm(rhs)
-                                                      : kInexactMax;
-      tolerance = std::max(o.solver_tolerance, std::min(kInexactMax, bound));
+    const Eigen::MatrixXd& N = *targets;
+    std::optional<detail::AndersonAcceleration> accelerate;
+    if (o.acceleration > 0) accelerate.emplace(o.acceleration);
+    double last_change = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < o.max_iterations; ++k) {
+      const Eigen::Index fallbacks = p_step(Fw, X, N, P);
+      if (along_normals) q_step(eq, X, o.omega2, o.fairness_tangential, Q);
+      v_step_rhs(rhs0, P, vc, o.omega1, along_normals ? &eq : nullptr, Q, rhs);
+      // CG's warm start: in the plain alternation the secant x_k + (x_k − x_{k−1}) (the vertices
+      // move smoothly from one iteration to the next: about a fifth fewer sweeps, Cone 1153 →
+      // 940); the accelerated iterate x_k itself, already an extrapolation. Only the starting
+      // point changes, not the solution.
+      if (v_step_system->iterative()) {
+        if (!accelerate && k >= 1)
+          G = X + (X - X_old);
+        else
+          G = X;
+      }
+      double tolerance = o.solver_tolerance;
+      if (inexact) {
+        const double bound = std::isfinite(last_change) ? kInexactFraction * last_change * closeness_min *
+                                                              std::sqrt(double(nv)) / frobenius_norm(rhs)
+                                                        : kInexactMax;
+        tolerance = std::max(o.solver_tolerance, std::min(kInexactMax, bound));
+      }
+      const int sweeps = v_step_system->solve(rhs, G, tolerance);
+      if (sweeps >= 0) res.solver_iterations.push_back(sweeps);
+      const double change = rms_move(G, X);
+      res.change_history.push_back(change);
+      res.iterations = done + k + 1;
+      res.fallback_projections = fallbacks;
+      if (progress) {
+        ProgressEvent ev{"vertex update", k + 1, o.max_iterations, change};
+        if (!progress(ev)) throw Cancelled("vertex update cancelled");
+      }
+      if (change < o.tolerance || k + 1 == o.max_iterations) {
+        X.swap(G);
+        res.converged = change < o.tolerance;
+        break;
+      }
+      if (accelerate) {
+        // A move larger than the last one: the combination overshot (the P-step's projection is
+        // not smooth where a face is about to flip), so start the history again from G.
+        if (change > last_change) accelerate->restart();
+        accelerate->step(G, X);
+      } else {
+        if (v_step_system->iterative()) X_old = X;
+        X.swap(G);
+      }
+      last_change = change;
     }
-    const int sweeps = v_step.solve(rhs, G, tolerance);
-    if (sweeps >= 0) res.solver_iterations.push_back(sweeps);
-    const double change = rms_move(G, X);
-    res.change_history.push_back(change);
-    res.iterations = k + 1;
-    res.fallback_projections = fallbacks;
-    if (progress) {
-      ProgressEvent ev{"vertex update", k + 1, o.max_iterations, change};
-      if (!progress(ev)) throw Cancelled("vertex update cancelled");
-    }
-    if (change < o.tolerance || k + 1 == o.max_iterations) {
-      X.swap(G);
-      res.converged = change < o.tolerance;
-      break;
-    }
-    if (accelerate) {
-      // A move larger than the last one: the combination overshot (the P-step's projection is
-      // not smooth where a face is about to flip), so start the history again from G.
-      if (change > last_change) accelerate->restart();
-      accelerate->step(G, X);
-    } else {
-      if (v_step.iterative()) X_old = X;
-      X.swap(G);
-    }
-    last_change = change;
+    done = res.iterations;
   }
-  Eigen::MatrixXd V(nv, 3);
-  detail::parallel_for(nv, [&](Eigen::Index i) { V.row(input_vertex(i)) = X.row(i); });
-  res.V = mesh.to_input_units(V);
+  res.V = mesh.to_input_units(positions());
   return res;
 }
 

@@ -43,14 +43,9 @@ struct VertexUpdateOptions {
   void validate() const;
 };
 
-/// Optional per-vertex inputs: multipliers of ω₃ (for inpainting: ≈0 on new vertices, large to
-/// pin) and a starting point.
+/// Optional per-vertex multipliers of ω₃ (for inpainting: ≈0 on new vertices, large to pin).
 struct VertexUpdateWeights {
   Eigen::VectorXd vertex_omega3;  ///< #V multipliers (empty: all ones)
-  /// #V by 3 positions, in the input's units, to start the iterations from (empty: the input
-  /// positions, as Algorithm 2). The closeness term still pulls towards the input: only the
-  /// path changes (a second update with targets close to the first's starts from its result).
-  Eigen::MatrixXd start;
 };
 
 /// How Algorithm 2 ran: iterations, convergence and histories (no per-element arrays).
