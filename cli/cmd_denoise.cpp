@@ -161,6 +161,7 @@ void run(const Args& a) {
     j.add("planar_regions", static_cast<long long>(r.planar_regions))
         .add("planar_faces", static_cast<long long>(r.planar_faces));
     j.add("jet_faces", static_cast<long long>(r.jet_faces));
+    j.add("unreachable_faces", static_cast<long long>(r.unreachable_faces));
     j.add("kept_components", static_cast<long long>(r.kept_components))
         .add("kept_faces", static_cast<long long>(r.kept_faces));
     j.add("n_step_cg_sweeps", r.normal_report.n_solver_iterations)
@@ -208,6 +209,9 @@ void run(const Args& a) {
     if (r.jet_faces > 0)
       std::cout << "  jet-fitted:       " << r.jet_faces
                 << " faces on curved parts took the normals of local quadrics\n";
+    if (r.unreachable_faces > 0)
+      std::cout << "  unreachable:      " << r.unreachable_faces << " faces ended more than "
+                << fmt(o.unreachable_angle, 3) << " deg from their targets and followed their neighbours\n";
     if (r.kept_components > 0)
       std::cout << "  kept as they are: " << r.kept_components << " component(s) of fewer than "
                 << o.min_component_faces << " faces (" << r.kept_faces << " faces): too few to tell noise from shape\n";

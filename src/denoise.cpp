@@ -21,6 +21,7 @@
 #include "planar_regions.h"
 #include "retargeted_update.h"
 #include "sub_mesh.h"
+#include "unreachable_targets.h"
 
 namespace msmesh {
 
@@ -80,6 +81,7 @@ void DenoiseOptions::validate() const {
     check_parameter(find_parameter(denoise_parameters(), "despike")->info, despike_threshold);
     check_parameter(find_parameter(denoise_parameters(), "planes")->info, plane_min_faces);
     check_parameter(find_parameter(denoise_parameters(), "jet-rings")->info, jet_rings);
+    check_parameter(find_parameter(denoise_parameters(), "unreachable-angle")->info, unreachable_angle);
     check_parameter(find_parameter(denoise_parameters(), "min-component-faces")->info, min_component_faces);
   }
 }
@@ -110,6 +112,7 @@ void put_back(const DenoiseResult& part, const detail::SubMesh& sub, const std::
   r.planar_regions += part.planar_regions;
   r.planar_faces += part.planar_faces;
   r.jet_faces += part.jet_faces;
+  r.unreachable_faces += part.unreachable_faces;
 }
 
 /// The result of denoising some groups of faces (each group on its own, with its own scale
@@ -209,18 +212,28 @@ DenoiseResult denoise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
   r.edges = std::move(nr.edges);
   r.normal_report = std::move(static_cast<NormalFilterStats&>(nr));
   const auto t1 = clock::now();
-  // Jet-fitted targets: after the update, second-order targets from its positions, and the
-  // update again from there on the system it built.
-  detail::Retarget jets;
-  if (o.jet_rings > 0)
-    jets = [&](const Eigen::MatrixXd& X, Eigen::MatrixXd& N) {
-      r.jet_faces = detail::fit_jet_targets(mesh, X, N, o.jet_rings, planes.snapped).faces;
-      if (r.jet_faces == 0) return false;
+  // Jet-fitted targets and unreachable ones: after the update, second-order targets from its
+  // positions, the targets it could not reach dropped, and the update again from there on the
+  // system it built.
+  detail::Retarget retarget;
+  std::vector<char> dropped;
+  if (o.jet_rings > 0 || o.unreachable_angle > 0)
+    retarget = [&](const Eigen::MatrixXd& X, Eigen::MatrixXd& N) {
+      dropped = detail::unreachable_targets(X, mesh.faces(), N, o.unreachable_angle, r.unreachable_faces);
+      if (o.jet_rings > 0) r.jet_faces = detail::fit_jet_targets(mesh, X, N, o.jet_rings, planes.snapped).faces;
+      if (r.jet_faces == 0 && r.unreachable_faces == 0) return false;
+      detail::drop_targets(dropped, N);
       r.normals = N;  // the result's targets (the update read its first ones already)
       return true;
     };
   VertexUpdateResult vr = detail::update_vertices_retargeted(mesh, r.normals, r.v.cwiseMax(0.0).cwiseMin(1.0),
-                                                             o.vertices, {}, progress, jets);
+                                                             o.vertices, {}, progress, retarget);
+  if (r.unreachable_faces > 0) {
+    // A dropped target is reported as the normal its face ended with.
+    const Eigen::MatrixXd reached = face_normals(vr.V, mesh.faces());
+    for (Eigen::Index f = 0; f < r.normals.rows(); ++f)
+      if (dropped[static_cast<std::size_t>(f)]) r.normals.row(f) = reached.row(f);
+  }
   r.V = std::move(vr.V);
   r.vertex_report = std::move(static_cast<VertexUpdateStats&>(vr));
   keep_unreferenced(V, F, r.V);

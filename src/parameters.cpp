@@ -290,6 +290,12 @@ const ParameterTable<DenoiseOptions>& denoise_parameters() {
                               "for a second vertex update (0: off, as the paper)",
                               kNormals),
                       &O::jet_rings));
+    t.push_back(field(real("unreachable-angle", "", "degrees", closed(0, 180),
+                           "a face whose normal after the vertex update lies farther than this from its target "
+                           "loses that target and follows its neighbours in a second vertex update (a face given "
+                           "the other side of a crease; 0: off, as the paper)",
+                           kNormals),
+                      &O::unreachable_angle));
     t.push_back(field(integer("min-component-faces", "", closed(0, 2147483647),
                               "components (vertex-connected) of fewer faces are kept as they are: too few to tell "
                               "noise from shape (0: every component denoised, as the paper)",

@@ -186,7 +186,8 @@ DenoiseOptions preset_options(const std::string& name) {
     o.normals.penalty = 0.1;  // slow ADMM = 30 iterations stop well short of the TV staircase
     o.vertices.omega2 = 0.3;
     o.vertices.omega3 = 0.3;
-    o.normals.polish = 0;  // averages the detail of organic shapes away (docs/presets.md, "The polish")
+    o.normals.polish = 0;     // averages the detail of organic shapes away (docs/presets.md, "The polish")
+    o.unreachable_angle = 0;  // lost on organic shapes (docs/presets.md, "Unreachable targets")
     return o;
   }
   if (name == "paper") {
@@ -202,6 +203,7 @@ DenoiseOptions preset_options(const std::string& name) {
     o.normals.polish = 0;                                             // Algorithm 1's normals as they come
     o.plane_min_faces = 0;                                            // and no planar regions
     o.jet_rings = 0;                                                  // nor jet-fitted targets
+    o.unreachable_angle = 0;                                          // nor dropped ones
     o.min_component_faces = 0;                                        // every component denoised
     o.normals.solver_tolerance = o.vertices.solver_tolerance = 1e-8;  // exact solves, as the paper's
     return o;
@@ -354,7 +356,7 @@ std::string ResolvedPreset::reason() const {
   const std::string tangential = options.vertices.fairness_tangential < 1
                                      ? ", fairness along the surface " + fixed(options.vertices.fairness_tangential, 2)
                                      : "";
-  const std::string jets = options.jet_rings > 0 ? "" : ", no jet-fitted targets (long waves of noise)";
+  const std::string jets = options.jet_rings > 0 ? "" : ", no jet-fitted or dropped targets (long waves of noise)";
   const std::string cap =
       scan_like  ? " (at most " + fixed(kAlphaMaxScanLike, 0) + ": scan-like, few creases and more detail than noise)"
       : despiked ? " (at most " + fixed(kAlphaMaxScanLike, 0) + " after the spike removal)"
@@ -481,8 +483,12 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   r.options = adaptive_options(r.preset, r.sigma, detail, r.scan_like || r.despiked ? kAlphaMaxScanLike : 0.0);
   if (r.despiked) r.options.despike_threshold = kDespikeThreshold;
   // Where detail is taken for correlated noise, the first update's positions keep long waves
-  // that quadrics would follow (docs/presets.md, "Jet-fitted targets").
-  if (r.detail_as_noise > 0) r.options.jet_rings = 0;
+  // that quadrics would follow (docs/presets.md, "Jet-fitted targets"), and that keep faces from
+  // their targets without a crease between (no second update there: "Unreachable targets").
+  if (r.detail_as_noise > 0) {
+    r.options.jet_rings = 0;
+    r.options.unreachable_angle = 0;
+  }
   if (r.featureless) {
     r.options.normals.polish = kFeaturelessPolish;
     r.options.normals.polish_range = kFeaturelessPolishRange;

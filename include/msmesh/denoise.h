@@ -49,6 +49,13 @@ struct DenoiseOptions {
   /// leave facets (docs/presets.md, "Jet-fitted targets"). 0: off, as the paper (preset
   /// "paper"); "auto" turns it off where it counts detail as correlated noise.
   int jet_rings = 3;
+  /// Unreachable targets (NMSTV/MSTV), degrees: when > 0, a face whose normal after the vertex
+  /// update lies farther than this from its target loses that target, and the vertex update
+  /// runs again (with the jet-fitted targets, if any): the face then follows its neighbours. Its
+  /// neighbours held it on one side of a crease while Algorithm 1 gave it the other side's normal
+  /// (docs/presets.md, "Unreachable targets"). 0: off, as the paper (preset "paper"); preset
+  /// "smooth" 0; "auto" 10 for the class cad, off where it counts detail as correlated noise.
+  double unreachable_angle = 10;
   /// Small components (NMSTV/MSTV): the vertex-connected components of fewer faces than this
   /// are kept as they are, and the rest is denoised as a mesh of its own. On a part of a few
   /// dozen triangles every face is a feature and the noise cannot be told from the shape (a
@@ -70,6 +77,7 @@ struct DenoiseResult {
   Eigen::Index planar_regions = 0;     ///< regions snapped to a plane (DenoiseOptions::plane_min_faces)
   Eigen::Index planar_faces = 0;       ///< faces in them
   Eigen::Index jet_faces = 0;          ///< faces given jet-fitted targets (DenoiseOptions::jet_rings)
+  Eigen::Index unreachable_faces = 0;  ///< faces whose targets were dropped (DenoiseOptions::unreachable_angle)
   Eigen::Index kept_components = 0;    ///< components kept as they are (DenoiseOptions::min_component_faces)
   Eigen::Index kept_faces = 0;         ///< faces in them
 };

@@ -39,6 +39,7 @@ py::dict denoise_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, con
   d["planar_regions"] = static_cast<long long>(r.planar_regions);
   d["planar_faces"] = static_cast<long long>(r.planar_faces);
   d["jet_faces"] = static_cast<long long>(r.jet_faces);
+  d["unreachable_faces"] = static_cast<long long>(r.unreachable_faces);
   d["kept_components"] = static_cast<long long>(r.kept_components);
   d["kept_faces"] = static_cast<long long>(r.kept_faces);
   return d;

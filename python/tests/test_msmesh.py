@@ -148,6 +148,20 @@ def test_small_components_are_kept_and_reported():
     assert np.abs(every[len(S):] - noisy[len(S):]).max() > 1e-4
 
 
+def test_unreachable_targets_are_reported():
+    V, F = msmesh.make_shape("fandisk", 16)
+    noisy = msmesh.add_noise(V, F, sigma=0.3, seed=3)
+    out, r = msmesh.denoise(noisy, F)
+    assert r["preset"] == "cad" and r["parameters"]["unreachable_angle"] == 10
+    assert 0 < r["unreachable_faces"] < len(F) // 50
+    np.testing.assert_allclose(np.linalg.norm(r["normals"], axis=1), 1.0, atol=1e-9)
+    off, o = msmesh.denoise(noisy, F, unreachable_angle=0)
+    assert o["unreachable_faces"] == 0
+    err = msmesh.evaluate(out, F, V, F)["msae"]
+    err_off = msmesh.evaluate(off, F, V, F)["msae"]
+    assert err < 0.9 * err_off
+
+
 def test_jet_fitted_targets_are_reported():
     V, F = msmesh.make_shape("torus", 16)
     noisy = msmesh.add_noise(V, F, sigma=0.1, seed=3)
@@ -222,9 +236,10 @@ def test_filter_then_update_matches_denoise(noisy_fandisk):
     params = {"normal_iterations": 8}
     N, v, nr = msmesh.filter_normals(V, F, preset="cad", **params)
     V_two, vr = msmesh.update_vertices(V, F, N, np.clip(v, 0, 1), preset="cad", vertex_iterations=6)
-    # (planes=0, jet_rings=0: denoise's planar regions and jet-fitted targets, between and
-    # after the two stages, would change the targets)
-    V_one, r = msmesh.denoise(V, F, preset="cad", vertex_iterations=6, planes=0, jet_rings=0, **params)
+    # (planes=0, jet_rings=0, unreachable_angle=0: denoise's planar regions, jet-fitted and
+    # dropped targets, between and after the two stages, would change the targets)
+    V_one, r = msmesh.denoise(V, F, preset="cad", vertex_iterations=6, planes=0, jet_rings=0, unreachable_angle=0,
+                              **params)
     assert_close_relative(N, r["normals"])
     assert_close_relative(V_two, V_one)
     assert nr["normal_iterations"] == r["normal_iterations"]

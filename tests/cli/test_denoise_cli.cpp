@@ -213,10 +213,37 @@ TEST(DenoiseCli, JetFittedTargetsAreReportedAndCanBeSwitchedOff) {
   const auto scan = run_cli("denoise " + waves + " -o " + out + " --json");
   ASSERT_EQ(scan.status, 0) << scan.out;
   EXPECT_NE(scan.out.find("\"jet_faces\":0,"), std::string::npos) << scan.out;
-  EXPECT_NE(scan.out.find("no jet-fitted targets (long waves of noise)"), std::string::npos) << scan.out;
+  EXPECT_NE(scan.out.find("no jet-fitted or dropped targets (long waves of noise)"), std::string::npos) << scan.out;
+  EXPECT_NE(scan.out.find("\"unreachable_faces\":0,"), std::string::npos) << scan.out;
   const auto bad = run_cli("denoise " + noisy + " -o " + out + " --jet-rings 11");
   EXPECT_NE(bad.status, 0);
   EXPECT_NE(bad.out.find("jet-rings"), std::string::npos) << bad.out;
+}
+
+TEST(DenoiseCli, UnreachableTargetsAreReportedAndCanBeSwitchedOff) {
+  // On a noisy fandisk (σ 0.3) Algorithm 1 gives some faces beside its creases the other side's
+  // normal: the defaults drop those targets (--unreachable-angle 10 for the class cad), and the
+  // JSON and the summary say how many; --unreachable-angle 0, presets smooth and paper drop none.
+  const TempDir d;
+  const std::string clean = d.file("fandisk.obj"), noisy = d.file("noisy.obj"), out = d.file("out.obj");
+  ASSERT_NO_FATAL_FAILURE(noisy_shape("fandisk --resolution 16", "--sigma 0.3 --seed 3", clean, noisy));
+  const auto on = run_cli("denoise " + noisy + " -o " + out + " --json");
+  ASSERT_EQ(on.status, 0) << on.out;
+  EXPECT_NE(on.out.find("\"preset\":\"cad\""), std::string::npos) << on.out;
+  EXPECT_EQ(on.out.find("\"unreachable_faces\":0,"), std::string::npos) << on.out;
+  EXPECT_NE(on.out.find("\"unreachable_faces\":"), std::string::npos) << on.out;
+  const auto summary = run_cli("denoise " + noisy + " -o " + out);
+  ASSERT_EQ(summary.status, 0) << summary.out;
+  EXPECT_NE(summary.out.find("unreachable:"), std::string::npos) << summary.out;
+  EXPECT_NE(summary.out.find("more than 10 deg from their targets"), std::string::npos) << summary.out;
+  for (const std::string extra : {"--unreachable-angle 0", "--preset smooth", "--preset paper"}) {
+    const auto off = run_cli("denoise " + noisy + " -o " + out + " --json " + extra);
+    ASSERT_EQ(off.status, 0) << off.out;
+    EXPECT_NE(off.out.find("\"unreachable_faces\":0,"), std::string::npos) << extra << ": " << off.out;
+  }
+  const auto bad = run_cli("denoise " + noisy + " -o " + out + " --unreachable-angle 181");
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.out.find("unreachable-angle"), std::string::npos) << bad.out;
 }
 
 TEST(DenoiseCli, PlanarRegionsAreReportedAndCanBeSwitchedOff) {
