@@ -425,3 +425,38 @@ TEST(Presets, TheKinectPyramidCountsPartOfItsDetailAsNoise) {
   // A stronger run scales all of it.
   EXPECT_NEAR(resolve_preset("auto", pyramid.V, pyramid.F, 2.0).sigma, 2 * r.sigma, 1e-12);
 }
+
+TEST(Presets, DetailThatStandsOutOfTheNoiseEasesTheRules) {
+  // A sphere with fine waves of its own (12 plane waves 2.5 mean edges long, RMS 0.25 mean
+  // edges, along the normals) under σ 0.15: the class smooth reads detail well above its doubt,
+  // every rule takes a lower σ, and the result keeps more of the waves than at the σ without
+  // the ease (strength = the ease undoes it). The plain sphere with the same noise is not eased.
+  const Mesh sphere = make_shape("sphere", 24);
+  const double h = mean_edge_length(sphere.V, sphere.F);
+  const double k = 2 * M_PI / (2.5 * h);
+  Eigen::VectorXd wave = Eigen::VectorXd::Zero(sphere.V.rows());
+  for (int i = 0; i < 12; ++i) {
+    const Eigen::Vector3d d = Eigen::Vector3d(std::cos(2.4 * i), std::sin(1.7 * i + 0.3), std::cos(0.9 * i + 1.1))
+                                  .normalized();  // 12 fixed directions
+    wave += ((sphere.V * d).array() * k + 0.7 * i).sin().matrix();
+  }
+  wave *= 0.25 * h / std::sqrt(wave.squaredNorm() / static_cast<double>(wave.size()));
+  const Eigen::MatrixXd detailed = sphere.V + sphere.V.rowwise().normalized().cwiseProduct(wave.replicate(1, 3));
+  NoiseOptions no;
+  no.sigma = 0.15;
+  no.seed = 3;
+  const Eigen::MatrixXd noisy = add_noise(detailed, sphere.F, no);
+  const ResolvedPreset eased = resolve_preset("auto", noisy, sphere.F);
+  ASSERT_EQ(eased.preset, "smooth") << eased.reason();
+  EXPECT_GT(eased.detail_ease, 1.5) << eased.reason();
+  EXPECT_NE(eased.reason().find("x for the detail"), std::string::npos) << eased.reason();
+  const ResolvedPreset undone = resolve_preset("auto", noisy, sphere.F, eased.detail_ease);
+  EXPECT_NEAR(undone.sigma, eased.detail_ease * eased.sigma, 1e-12);
+  const double e_eased = normal_errors(denoise(noisy, sphere.F, eased.options).V, sphere.F, detailed, sphere.F).msae;
+  const double e_undone = normal_errors(denoise(noisy, sphere.F, undone.options).V, sphere.F, detailed, sphere.F).msae;
+  EXPECT_LT(e_eased, 0.8 * e_undone) << e_undone << " -> " << e_eased;
+
+  const ResolvedPreset plain = resolve_preset("auto", add_noise(sphere.V, sphere.F, no), sphere.F);
+  EXPECT_EQ(plain.detail_ease, 1.0) << plain.reason();
+  EXPECT_EQ(plain.reason().find("x for the detail"), std::string::npos) << plain.reason();
+}

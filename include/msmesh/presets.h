@@ -80,8 +80,13 @@ struct ResolvedPreset {
   /// : noise), for the class smooth without its detail d: strength × √(σ_rms² − d²), d² =
   /// max(0, detail² − (0.5 sigma_noise)²) of the same estimate; for class cad with few creases
   /// (not despiked) with its detail counted as noise: strength × √(σ_rms² + 8 w detail²),
-  /// w = detail_as_noise.
+  /// w = detail_as_noise; and for the class smooth divided by detail_ease.
   double sigma = 0;
+  /// Class smooth, not despiked, noise alone at least 0.1 (auto): 1 + 2 d' / max(sigma_noise,
+  /// 0.15), d'² = max(0, detail² − (0.35 sigma_noise)²): detail that stands out of the noise
+  /// eases every rule, σ divided by it (docs/presets.md, "Detail that stands out of the noise").
+  /// 1 otherwise.
+  double detail_ease = 1;
   /// Class cad by its flat areas alone, not despiked (auto): how much of the detail counts as
   /// (correlated) noise in sigma, clamp((detail / sigma_noise − 0.5) / 0.5, 0, 1): 1 for a
   /// scan-like mesh, 0 where the detail is at most half the noise (docs/presets.md, "Correlated
