@@ -136,6 +136,7 @@ void run(const Args& a) {
           .add("noise_detail", preset.noise.detail)
           .add("noise_level_used", preset.sigma)
           .add("noise_detail_as_noise", preset.detail_as_noise)
+          .add("noise_detail_ease", preset.detail_ease)
           .add("noise_despiked", preset.despiked)
           .add("noise_sigma_rms_despiked", preset.noise_despiked.sigma_rms)
           .add("auto_quadric_excess", preset.quadric_excess)

@@ -216,23 +216,36 @@ DenoiseResult denoise(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const 
   // positions, the targets it could not reach dropped, and the update again from there on the
   // system it built.
   detail::Retarget retarget;
-  std::vector<char> dropped;
+  detail::UnreachableTargets dropped;
+  std::vector<std::pair<Eigen::Index, Eigen::RowVector3d>> dropped_targets;
   if (o.jet_rings > 0 || o.unreachable_angle > 0)
     retarget = [&](const Eigen::MatrixXd& X, Eigen::MatrixXd& N) {
-      dropped = detail::unreachable_targets(X, mesh.faces(), N, o.unreachable_angle, r.unreachable_faces);
-      if (o.jet_rings > 0) r.jet_faces = detail::fit_jet_targets(mesh, X, N, o.jet_rings, planes.snapped).faces;
+      dropped = detail::unreachable_targets(X, mesh.faces(), N, o.unreachable_angle);
+      r.unreachable_faces = dropped.faces;
+      if (o.jet_rings > 0) {
+        // (no fit for a face whose target is dropped)
+        std::vector<bool> fixed = planes.snapped;
+        if (dropped.faces > 0) {
+          fixed.resize(static_cast<std::size_t>(N.rows()), false);
+          for (std::size_t f = 0; f < fixed.size(); ++f) fixed[f] = fixed[f] || dropped.marked[f];
+        }
+        r.jet_faces = detail::fit_jet_targets(mesh, X, N, o.jet_rings, fixed).faces;
+      }
       if (r.jet_faces == 0 && r.unreachable_faces == 0) return false;
-      detail::drop_targets(dropped, N);
+      for (Eigen::Index f = 0; f < N.rows(); ++f)
+        if (dropped.marked[static_cast<std::size_t>(f)]) dropped_targets.emplace_back(f, N.row(f));
+      detail::drop_targets(dropped.marked, N);
       r.normals = N;  // the result's targets (the update read its first ones already)
       return true;
     };
   VertexUpdateResult vr = detail::update_vertices_retargeted(mesh, r.normals, r.v.cwiseMax(0.0).cwiseMin(1.0),
                                                              o.vertices, {}, progress, retarget);
-  if (r.unreachable_faces > 0) {
-    // A dropped target is reported as the normal its face ended with.
+  if (!dropped_targets.empty()) {
+    // A dropped target is reported as the normal its face ended with (as it was, if the face
+    // collapsed).
     const Eigen::MatrixXd reached = face_normals(vr.V, mesh.faces());
-    for (Eigen::Index f = 0; f < r.normals.rows(); ++f)
-      if (dropped[static_cast<std::size_t>(f)]) r.normals.row(f) = reached.row(f);
+    for (const auto& [f, target] : dropped_targets)
+      r.normals.row(f) = reached.row(f).squaredNorm() > 0 ? Eigen::RowVector3d(reached.row(f)) : target;
   }
   r.V = std::move(vr.V);
   r.vertex_report = std::move(static_cast<VertexUpdateStats&>(vr));

@@ -124,7 +124,7 @@ constexpr double kDetailCloseness = 3.0, kDetailMaxGain = 10.0, kDetailDoubt = 0
 //   noise and detail is not to be trusted (long waves on a torus lost up to 1.23×), and a
 //   despiked mesh's detail is what the spikes left (docs/presets.md, "Detail that stands out of
 //   the noise").
-constexpr double kDetailEase = 2.0, kDetailEaseDoubt = 0.35, kDetailEaseFloor = 0.15, kDetailEaseFrom = 0.1;
+constexpr double kDetailEase = 2.0, kDetailEaseDoubt = 0.3, kDetailEaseFloor = 0.15, kDetailEaseFrom = 0.1;
 //   Impulsive noise: when at least kDespikeFromOutliers of the vertices are outliers of the noise
 //   estimate (beyond 4 robust σ) and σ_rms is at least kDespikeFromSigmaRms, the spikes are first
 //   moved onto a low-pass copy (despike.h) at kDespikeThreshold robust σ, and the rules above take σ

@@ -1,5 +1,5 @@
 // Internal: Algorithm 2 run again with new targets on the system it already built (denoise.cpp's
-// jet-fitted targets; docs/presets.md, "Jet-fitted targets").
+// jet-fitted and dropped targets; docs/presets.md, "Jet-fitted targets", "Unreachable targets").
 #pragma once
 #include <Eigen/Core>
 #include <functional>

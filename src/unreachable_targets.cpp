@@ -9,21 +9,20 @@
 
 namespace msmesh::detail {
 
-std::vector<char> unreachable_targets(const Eigen::MatrixXd& X, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
-                                      double angle_deg, Eigen::Index& count) {
+UnreachableTargets unreachable_targets(const Eigen::MatrixXd& X, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,
+                                       double angle_deg) {
   const Eigen::Index nf = F.rows();
-  std::vector<char> marked(static_cast<std::size_t>(nf), 0);
-  count = 0;
-  if (!(angle_deg > 0)) return marked;
+  UnreachableTargets r;
+  r.marked.assign(static_cast<std::size_t>(nf), 0);
+  if (!(angle_deg > 0)) return r;
   const Eigen::MatrixXd reached = face_normals(X, F);
   const double cos_max = std::cos(angle_deg * M_PI / 180);
   parallel_for(nf, [&](Eigen::Index f) {
-    // (a face the update collapsed has no normal to judge by)
     const double c = reached.row(f).dot(N.row(f));
-    marked[static_cast<std::size_t>(f)] = reached.row(f).squaredNorm() > 0 && c < cos_max ? 1 : 0;
+    r.marked[static_cast<std::size_t>(f)] = reached.row(f).squaredNorm() > 0 && c < cos_max ? 1 : 0;
   });
-  for (const char m : marked) count += m;
-  return marked;
+  for (const char m : r.marked) r.faces += m;
+  return r;
 }
 
 void drop_targets(const std::vector<char>& marked, Eigen::MatrixXd& N) {

@@ -80,7 +80,8 @@ EdgeQuads edge_quads(const Eigen::MatrixXi& F, const Topology& topo, const std::
     if (N.size()) {
       const Eigen::RowVector3d n = N.row(topo.edge_faces(e, 0)) + N.row(topo.edge_faces(e, 1));
       const double len = n.norm();
-      // Opposite normals (a fold) have no mean: the whole term acts there, as the paper's.
+      // Opposite normals (a fold), or two dropped targets (denoise.cpp, unreachable targets), have
+      // no mean: the whole term acts there, as the paper's.
       q.quad_normal.push_back(len > 1e-6 ? Eigen::RowVector3d(n / len) : Eigen::RowVector3d::Zero());
     }
   }

@@ -79,17 +79,16 @@ TEST(InternalUnreachableTargets, AFaceItsNeighboursHoldIsMarkedAndFollowsThemOnc
   EXPECT_GT(angle_deg(face_normals(held.V, cube.F).row(bad), N.row(bad)), 30.0);  // far from its target
   EXPECT_GT(error_deg(held), 3 * error_deg(right));                               // but pulled off its side
 
-  Eigen::Index marked = -1;
-  std::vector<char> mask;
+  detail::UnreachableTargets found;
   const VertexUpdateResult freed = detail::update_vertices_retargeted(
       mesh, N, v, o, {}, {}, [&](const Eigen::MatrixXd& X, Eigen::MatrixXd& targets) {
-        mask = detail::unreachable_targets(X, mesh.faces(), targets, 10.0, marked);
-        detail::drop_targets(mask, targets);
-        return marked > 0;
+        found = detail::unreachable_targets(X, mesh.faces(), targets, 10.0);
+        detail::drop_targets(found.marked, targets);
+        return found.faces > 0;
       });
-  ASSERT_EQ(mask.size(), static_cast<std::size_t>(cube.F.rows()));
-  EXPECT_TRUE(mask[static_cast<std::size_t>(bad)]);
-  EXPECT_LE(marked, 4);  // it, and a neighbour or two it dragged along
+  ASSERT_EQ(found.marked.size(), static_cast<std::size_t>(cube.F.rows()));
+  EXPECT_TRUE(found.marked[static_cast<std::size_t>(bad)]);
+  EXPECT_LE(found.faces, 4);  // it, and a neighbour or two it dragged along
   // (right 0.34°, held 10.9°, freed 1.0°: with no target of its own it is held only by its
   // neighbours and the closeness to the noisy input)
   EXPECT_LT(error_deg(freed), 0.15 * error_deg(held)) << error_deg(right) << " " << error_deg(held);
@@ -101,20 +100,19 @@ TEST(InternalUnreachableTargets, MarksOnlyFacesFarFromTheirTargetsWhateverTheFra
   Eigen::MatrixXd N = truth;
   N.row(7) = tilted(truth.row(7), 15);  // 15° off
   N.row(20) = tilted(truth.row(20), 5);
-  Eigen::Index count = -1;
-  std::vector<char> mask = detail::unreachable_targets(cube.V, cube.F, N, 10.0, count);
-  EXPECT_EQ(count, 1);
+  const std::vector<char> mask = detail::unreachable_targets(cube.V, cube.F, N, 10.0).marked;
+  EXPECT_EQ(detail::unreachable_targets(cube.V, cube.F, N, 10.0).faces, 1);
   EXPECT_TRUE(mask[7]);
   EXPECT_EQ(std::count(mask.begin(), mask.end(), 1), 1);
-  EXPECT_EQ((detail::unreachable_targets(cube.V, cube.F, N, 4.0, count), count), 2);
-  EXPECT_EQ((detail::unreachable_targets(cube.V, cube.F, N, 0.0, count), count), 0);  // off
+  EXPECT_EQ(detail::unreachable_targets(cube.V, cube.F, N, 4.0).faces, 2);
+  EXPECT_EQ(detail::unreachable_targets(cube.V, cube.F, N, 0.0).faces, 0);  // off
 
   // Rotated, scaled and moved together with its targets: the same faces.
   const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
   const Eigen::MatrixXd moved = ((cube.V * R.transpose()) * 37.0).rowwise() + Eigen::RowVector3d(5, -3, 11);
-  Eigen::Index count_moved = -1;
-  EXPECT_EQ(detail::unreachable_targets(moved, cube.F, N * R.transpose(), 10.0, count_moved), mask);
-  EXPECT_EQ(count_moved, 1);
+  const detail::UnreachableTargets in_moved = detail::unreachable_targets(moved, cube.F, N * R.transpose(), 10.0);
+  EXPECT_EQ(in_moved.marked, mask);
+  EXPECT_EQ(in_moved.faces, 1);
 
   Eigen::MatrixXd dropped = N;
   detail::drop_targets(mask, dropped);

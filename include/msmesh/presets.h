@@ -83,7 +83,7 @@ struct ResolvedPreset {
   /// w = detail_as_noise; and for the class smooth divided by detail_ease.
   double sigma = 0;
   /// Class smooth, not despiked, noise alone at least 0.1 (auto): 1 + 2 d' / max(sigma_noise,
-  /// 0.15), d'² = max(0, detail² − (0.35 sigma_noise)²): detail that stands out of the noise
+  /// 0.15), d'² = max(0, detail² − (0.3 sigma_noise)²): detail that stands out of the noise
   /// eases every rule, σ divided by it (docs/presets.md, "Detail that stands out of the noise").
   /// 1 otherwise.
   double detail_ease = 1;

@@ -176,6 +176,7 @@ def _resolve_preset(V, F, preset, report, strength=1.0):
             "noise_detail",
             "noise_level_used",
             "noise_detail_as_noise",
+            "noise_detail_ease",
             "noise_despiked",
             "noise_sigma_rms_despiked",
         ):

@@ -137,6 +137,7 @@ py::dict resolve_preset_binding(const std::string& name, const Eigen::MatrixXd& 
     d["noise_detail"] = r.noise.detail;
     d["noise_level_used"] = r.sigma;
     d["noise_detail_as_noise"] = r.detail_as_noise;
+    d["noise_detail_ease"] = r.detail_ease;
     d["noise_despiked"] = r.despiked;
     d["noise_sigma_rms_despiked"] = r.noise_despiked.sigma_rms;
     d["quadric_excess"] = r.quadric_excess;

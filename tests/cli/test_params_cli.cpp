@@ -152,7 +152,8 @@ TEST(ParamsCli, DenoiseSaysWhatItEstimatedAndTakesAStrength) {
   const auto run = test::run_cli("denoise " + mesh + ".noisy.obj -o " + out + " --json");
   ASSERT_EQ(run.status, 0) << run.out;
   for (const char* key : {"\"noise_sigma\":", "\"noise_sigma_rms\":", "\"noise_sigma_noise\":", "\"noise_detail\":",
-                          "\"noise_level_used\":", "\"noise_detail_as_noise\":", "\"strength\":1", "\"prefilter\":"})
+                          "\"noise_level_used\":", "\"noise_detail_as_noise\":", "\"noise_detail_ease\":",
+                          "\"strength\":1", "\"prefilter\":"})
     EXPECT_NE(run.out.find(key), std::string::npos) << key << "\n" << run.out;
   const auto text = test::run_cli("denoise " + mesh + ".noisy.obj -o " + out + " --strength 2");
   ASSERT_EQ(text.status, 0) << text.out;
