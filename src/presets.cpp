@@ -472,13 +472,17 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   // was judged on the copy pre-filtered for σ_rms; the options may pre-filter less).
   double detail = 0;
   if (r.preset == "smooth") {
-    const double rms = measured.sigma_rms, d = measured.detail, n = kDetailDoubt * measured.sigma_noise;
-    detail = std::sqrt(std::max(0.0, d * d - n * n));
+    // The detail less `doubt` times the noise alone, in quadrature.
+    const auto detail_beyond = [&](double doubt) {
+      const double d = measured.detail, n = doubt * measured.sigma_noise;
+      return std::sqrt(std::max(0.0, d * d - n * n));
+    };
+    const double rms = measured.sigma_rms;
+    detail = detail_beyond(kDetailDoubt);
     r.sigma = strength * std::sqrt(std::max(0.0, rms * rms - detail * detail));
     if (!r.despiked && measured.sigma_noise >= kDetailEaseFrom) {
-      const double doubt = kDetailEaseDoubt * measured.sigma_noise;
-      const double standing_out = std::sqrt(std::max(0.0, d * d - doubt * doubt));
-      r.detail_ease = 1 + kDetailEase * standing_out / std::max(measured.sigma_noise, kDetailEaseFloor);
+      r.detail_ease =
+          1 + kDetailEase * detail_beyond(kDetailEaseDoubt) / std::max(measured.sigma_noise, kDetailEaseFloor);
       r.sigma /= r.detail_ease;
     }
   }

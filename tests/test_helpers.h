@@ -94,6 +94,17 @@ inline Mesh join(const Mesh& a, const Mesh& b, const Eigen::RowVector3d& offset)
   return m;
 }
 
+/// Mean over the rows of the squared angle (radians) between the unit rows of A and B (the MSAE
+/// of two sets of normals).
+inline double mean_squared_angle(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
+  double s = 0;
+  for (Eigen::Index f = 0; f < A.rows(); ++f) {
+    const double t = std::acos(std::clamp(A.row(f).dot(B.row(f)), -1.0, 1.0));
+    s += t * t;
+  }
+  return s / static_cast<double>(A.rows());
+}
+
 /// RMS of the z coordinate over `count` rows from `first` (a flat grid has 0).
 inline double z_rms(const Eigen::MatrixXd& V, Eigen::Index first, Eigen::Index count) {
   return std::sqrt(V.middleRows(first, count).col(2).squaredNorm() / double(count));

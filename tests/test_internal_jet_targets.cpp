@@ -18,19 +18,11 @@
 #include "msmesh/prepared_mesh.h"
 #include "msmesh/presets.h"
 #include "msmesh/shapes.h"
+#include "test_helpers.h"
 
 using namespace msmesh;
 
 namespace {
-
-double mean_squared_angle(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
-  double s = 0;
-  for (Eigen::Index f = 0; f < A.rows(); ++f) {
-    const double t = std::acos(std::clamp(A.row(f).dot(B.row(f)), -1.0, 1.0));
-    s += t * t;
-  }
-  return s / static_cast<double>(A.rows());
-}
 
 // Plateaus: every normal replaced by the nearest of the directions whose polar and azimuthal
 // angles are multiples of `step_deg` (the piecewise constant normals of a staircased surface).
@@ -59,10 +51,10 @@ TEST(InternalJetTargets, CurvedSurfacesGetTheirSmoothNormalsBack) {
   const Eigen::MatrixXd truth = face_normals(torus.V, torus.F);
   const PreparedMesh mesh(torus.V, torus.F);
   Eigen::MatrixXd N = plateaus(truth, 6.0);
-  const double before = mean_squared_angle(N, truth);
+  const double before = test::mean_squared_angle(N, truth);
   const detail::JetTargets r = detail::fit_jet_targets(mesh, normalised(mesh, torus.V), N, 3, {});
   EXPECT_GT(r.faces, torus.F.rows() / 2);
-  const double after = mean_squared_angle(N, truth);
+  const double after = test::mean_squared_angle(N, truth);
   EXPECT_LT(after, 0.2 * before) << before << " -> " << after;
   for (Eigen::Index f = 0; f < N.rows(); ++f) ASSERT_NEAR(N.row(f).norm(), 1.0, 1e-12);
 }

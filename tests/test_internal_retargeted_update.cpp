@@ -17,19 +17,6 @@
 
 using namespace msmesh;
 
-namespace {
-
-double mean_squared_angle(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
-  double s = 0;
-  for (Eigen::Index f = 0; f < A.rows(); ++f) {
-    const double t = std::acos(std::clamp(A.row(f).dot(B.row(f)), -1.0, 1.0));
-    s += t * t;
-  }
-  return s / static_cast<double>(A.rows());
-}
-
-}  // namespace
-
 TEST(InternalRetargetedUpdate, WithoutNewTargetsItIsTheUpdate) {
   const Mesh m = test::noisy_cube(5, 0.2);
   const Mesh c = make_cube(5);
@@ -90,8 +77,8 @@ TEST(InternalRetargetedUpdate, NewTargetsAreFollowedAlongTheSurfaceOrAlongTheNor
         });
     EXPECT_GT(both.iterations, first.iterations) << tau;
     EXPECT_EQ(both.change_history.size(), static_cast<std::size_t>(both.iterations)) << tau;
-    const double before = mean_squared_angle(face_normals(first.V, m.F), truth);
-    const double after = mean_squared_angle(face_normals(both.V, m.F), truth);
+    const double before = test::mean_squared_angle(face_normals(first.V, m.F), truth);
+    const double after = test::mean_squared_angle(face_normals(both.V, m.F), truth);
     EXPECT_LT(after, 0.2 * before) << tau << ": " << before << " -> " << after;
   }
 }
