@@ -38,6 +38,12 @@ constexpr double kCadCreaseFraction = 0.03;  // cad when creases make at least t
 // directions, and an organic shape's fine detail make short scattered ones (docs/presets.md,
 // "Crease lines": sweep geometric mean 0.961x, 13 more cases below both baselines).
 constexpr double kCreaseLineMinEdges = 40.0;
+// ... and at least kCadLinesSteepShare of those lines steep (below): a part's crease lines are
+// mostly its edges, while the long creases an organic shape reads (the DeepMeshPrior dragon's
+// ridges, every fold under heavy noise in random directions) are mostly gentler: 0.29–0.56 of
+// them steep where the class cad lost to smooth by up to 3.4x, 0.64–1.0 on the parts
+// (docs/presets.md, "Gentle crease lines").
+constexpr double kCadLinesSteepShare = 0.6;
 // ... or steep creases (a pre-smoothed dihedral above kSteepAngleDeg) on such lines at least
 // kCadSteepFraction of the edge length and kCadSteepShare of the creases on lines: fewer crease
 // lines, but a part's edges (grooves, the rims of a capped cylinder), where an organic shape's
@@ -330,16 +336,23 @@ PresetChoice detail::choose_preset_masked(const Eigen::MatrixXd& V, const Eigen:
   c.steep_line_fraction = total > 0 ? steep_lines / total : 0;
   const bool steep_lines_rule =
       c.steep_line_fraction >= kCadSteepFraction && c.steep_line_fraction >= kCadSteepShare * c.crease_line_fraction;
-  const bool creases = c.crease_line_fraction >= kCadCreaseFraction || steep_lines_rule;
+  const bool lines_rule = c.crease_line_fraction >= kCadCreaseFraction &&
+                          c.steep_line_fraction >= kCadLinesSteepShare * c.crease_line_fraction;
+  const bool creases = lines_rule || steep_lines_rule;
   const bool flats = c.flat_fraction >= kCadFlatFraction;
   c.preset = (creases || flats) ? "cad" : "smooth";
-  c.reason = "crease fraction " + fixed(c.sharp_fraction, 3) + ", on lines of " + fixed(kCreaseLineMinEdges, 0) +
-             " edges or more " + fixed(c.crease_line_fraction, 3) +
-             (c.crease_line_fraction >= kCadCreaseFraction ? " >= " : " < ") + fixed(kCadCreaseFraction, 2) +
-             ", steeper than " + fixed(kSteepAngleDeg, 0) + " deg " + fixed(c.steep_line_fraction, 4) +
-             (steep_lines_rule ? " (>= " : " (not >= ") + fixed(kCadSteepFraction, 3) + " and " +
-             fixed(100 * kCadSteepShare, 0) + " % of those)" + ", flat fraction " + fixed(c.flat_fraction, 2) +
-             (flats ? " >= " : " < ") + fixed(kCadFlatFraction, 2) + (c.preset == "cad" ? ": cad" : ": smooth");
+  c.reason =
+      "crease fraction " + fixed(c.sharp_fraction, 3) + ", on lines of " + fixed(kCreaseLineMinEdges, 0) +
+      " edges or more " + fixed(c.crease_line_fraction, 3) +
+      (c.crease_line_fraction >= kCadCreaseFraction ? " >= " : " < ") + fixed(kCadCreaseFraction, 2) +
+      (c.crease_line_fraction >= kCadCreaseFraction
+           ? (lines_rule ? " (" : " but only ") + fixed(100 * c.steep_line_fraction / c.crease_line_fraction, 0) +
+                 " % of them steep" + (lines_rule ? ", >= " : " (< ") + fixed(100 * kCadLinesSteepShare, 0) + " %)"
+           : "") +
+      ", steeper than " + fixed(kSteepAngleDeg, 0) + " deg " + fixed(c.steep_line_fraction, 4) +
+      (steep_lines_rule ? " (>= " : " (not >= ") + fixed(kCadSteepFraction, 3) + " and " +
+      fixed(100 * kCadSteepShare, 0) + " % of those)" + ", flat fraction " + fixed(c.flat_fraction, 2) +
+      (flats ? " >= " : " < ") + fixed(kCadFlatFraction, 2) + (c.preset == "cad" ? ": cad" : ": smooth");
   return c;
 }
 

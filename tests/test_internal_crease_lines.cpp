@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <vector>
 
 #include "crease_lines.h"
@@ -128,4 +129,51 @@ TEST(CreaseLines, APatchSampleCountsLinesItCuts) {
   EXPECT_NEAR(r.choice.crease_line_fraction, r.choice.sharp_fraction, 1e-12);
   const PresetChoice whole = choose_preset(cube.V, cube.F);
   EXPECT_NEAR(whole.crease_line_fraction, whole.sharp_fraction, 1e-12);
+}
+
+namespace {
+
+// A wavy sheet folded along lines x = const every `period` grid columns: a triangle wave of
+// the given slope on both sides of each fold (dihedral 2·atan(slope)) on a surface curved in
+// both directions, so that little of it is flat.
+Mesh folded_sheet(int n, double slope, int period) {
+  Mesh m;
+  m.V.resize(n * n, 3);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double phase = std::fmod(double(i), double(period)) / period;
+      const double wave = period / 2.0 * (1 - std::abs(2 * phase - 1));
+      const double z = slope * wave + 2 * std::cos(2 * M_PI * j / 24.0) + std::cos(2 * M_PI * i / 30.0);
+      m.V.row(i * n + j) << i, j, z;
+    }
+  m.F.resize(2 * (n - 1) * (n - 1), 3);
+  Eigen::Index f = 0;
+  for (int i = 0; i + 1 < n; ++i)
+    for (int j = 0; j + 1 < n; ++j) {
+      const int a = i * n + j, b = (i + 1) * n + j;
+      m.F.row(f++) << a, b, b + 1;
+      m.F.row(f++) << a, b + 1, a + 1;
+    }
+  return m;
+}
+
+}  // namespace
+
+TEST(CreaseLines, GentleLinesDoNotMakeAPart) {
+  // Folds of ~60° on a curved sheet: long crease lines (more than the 3 % of the lines rule)
+  // but none of them steep after the pre-smoothing, and little flat: organic ridges, smooth.
+  const Mesh gentle = folded_sheet(80, 0.6, 8);
+  const PresetChoice g = choose_preset(gentle.V, gentle.F);
+  ASSERT_GE(g.crease_line_fraction, 0.03) << g.reason;
+  ASSERT_LT(g.steep_line_fraction, 0.6 * g.crease_line_fraction) << g.reason;
+  ASSERT_LT(g.flat_fraction, 0.5) << g.reason;
+  EXPECT_EQ(g.preset, "smooth") << g.reason;
+  EXPECT_NE(g.reason.find("% of them steep (< 60 %)"), std::string::npos) << g.reason;
+  // The same sheet folded at ~100°: the lines are steep, a part's edges: cad.
+  const Mesh steep = folded_sheet(80, 1.2, 8);
+  const PresetChoice s = choose_preset(steep.V, steep.F);
+  ASSERT_LT(s.flat_fraction, 0.5) << s.reason;
+  ASSERT_GE(s.steep_line_fraction, 0.6 * s.crease_line_fraction) << s.reason;
+  EXPECT_EQ(s.preset, "cad") << s.reason;
+  EXPECT_NE(s.reason.find("% of them steep, >= 60 %"), std::string::npos) << s.reason;
 }
