@@ -134,6 +134,7 @@ void run(const Args& a) {
           .add("noise_outlier_fraction", preset.noise.outlier_fraction)
           .add("noise_sigma_noise", preset.noise.sigma_noise)
           .add("noise_detail", preset.noise.detail)
+          .add("noise_across_ratio", preset.noise.across_ratio)
           .add("noise_level_used", preset.sigma)
           .add("noise_detail_as_noise", preset.detail_as_noise)
           .add("noise_detail_ease", preset.detail_ease)

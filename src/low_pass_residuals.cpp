@@ -24,7 +24,12 @@ LowPassResiduals low_pass_residuals(const Eigen::MatrixXd& V, const Eigen::Matri
   r.used.assign(static_cast<std::size_t>(V.rows()), false);
   for (Eigen::Index i = 0; i < F.size(); ++i) r.used[static_cast<std::size_t>(F.data()[i])] = true;
   r.residual.resize(V.rows());
-  for (Eigen::Index i = 0; i < V.rows(); ++i) r.residual(i) = (V.row(i) - r.smooth.row(i)).dot(r.normals.row(i));
+  r.across.resize(V.rows());
+  for (Eigen::Index i = 0; i < V.rows(); ++i) {
+    const Eigen::RowVector3d d = V.row(i) - r.smooth.row(i);
+    r.residual(i) = d.dot(r.normals.row(i));
+    r.across(i) = (d - r.residual(i) * r.normals.row(i)).norm();
+  }
   const Eigen::MatrixXd light_normals = vertex_normals(light, F);
   r.light_residual.resize(V.rows());
   for (Eigen::Index i = 0; i < V.rows(); ++i) r.light_residual(i) = (V.row(i) - light.row(i)).dot(light_normals.row(i));

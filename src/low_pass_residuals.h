@@ -14,6 +14,7 @@ struct LowPassResiduals {
   Eigen::MatrixXd smooth;    ///< #V by 3 low-pass positions
   Eigen::MatrixXd normals;   ///< #V by 3 vertex normals of the low-pass copy
   Eigen::VectorXd residual;  ///< #V signed distances along the normals, in the mesh's units
+  Eigen::VectorXd across;    ///< #V lengths of the rest of V − S (across the normals), the same units
   /// #V: the same after the first kLightPassIterations iterations only (along that copy's
   /// normals). White noise leaves a fixed fraction of itself in both; the shape's detail and
   /// creases grow with the iterations (noise_estimate.cpp).

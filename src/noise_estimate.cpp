@@ -62,12 +62,16 @@ NoiseEstimate detail::estimate_noise_from(const LowPassResiduals& lp, const std:
   std::vector<double> d, light;
   d.reserve(lp.used.size());
   light.reserve(lp.used.size());
+  double along2 = 0, across2 = 0;
   for (Eigen::Index i = 0; i < lp.residual.size(); ++i)
     if (lp.used[static_cast<std::size_t>(i)] && (!measured || (*measured)[static_cast<std::size_t>(i)])) {
       d.push_back(lp.residual(i) / scale);
       light.push_back(lp.light_residual(i) / scale);
+      along2 += lp.residual(i) * lp.residual(i);
+      across2 += lp.across(i) * lp.across(i);
     }
   if (d.empty()) return e;
+  e.across_ratio = along2 > 0 ? std::sqrt(across2 / along2) : 0;
   const detail::RobustSpread spread = detail::robust_spread(d);
   const double m = spread.median, mad = spread.sigma;
   std::vector<double> a(d.size());

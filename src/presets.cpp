@@ -94,6 +94,14 @@ constexpr int kPrefilterMax = 5, kPrefilterMaxSmooth = 10;
 //   the fairness term (v ≈ 1 everywhere on organic shapes) flattens curvature the input still has,
 //   so it is weak at low noise and reaches its full weight at σ 0.4.
 constexpr double kFairnessFrom = 0.1, kFairnessSpan = 0.3, kFairnessMinShare = 0.1;
+//   ω₂ (class cad; not despiked, not featureless) where the noise goes across the normals
+//   (NoiseEstimate::across_ratio ≥ kAcrossRatio): from preset cad's up to kAcrossFairness as
+//   strength × σ_rms goes from kAcrossFairnessFrom to kAcrossFairnessTo. Heavy noise in random
+//   directions leaves the triangles of a CAD part tangled across the surface, which the weak
+//   fairness of the class cad (0.03) does not undo (the Nousias casting at random 0.7: 343 flipped
+//   faces, 51 at 0.1); noise along the normals of the same σ does not want it (docs/presets.md,
+//   "Heavy noise in random directions on CAD parts").
+constexpr double kAcrossRatio = 1.25, kAcrossFairness = 0.1, kAcrossFairnessFrom = 0.25, kAcrossFairnessTo = 0.4;
 //   τ (class cad), the share of the fairness term that acts along the surface
 //   (VertexUpdateOptions::fairness_tangential) = kTangentialMin up to σ kTangentialFrom, rising
 //   linearly to 1 (the paper's whole term) at kTangentialTo: the term's pull along the surface
@@ -381,6 +389,11 @@ std::string ResolvedPreset::reason() const {
                                      ? ", fairness along the surface " + fixed(options.vertices.fairness_tangential, 2)
                                      : "";
   const std::string jets = options.jet_rings > 0 ? "" : ", no jet-fitted or dropped targets (long waves of noise)";
+  const std::string across =
+      preset == "cad" && !featureless && options.vertices.omega2 > preset_options("cad").vertices.omega2
+          ? ", fairness " + fixed(options.vertices.omega2, 3) + " (noise across the normals, " +
+                fixed(noise.across_ratio, 2) + " of it along them)"
+          : "";
   const std::string cap =
       scan_like  ? " (at most " + fixed(kAlphaMaxScanLike, 0) + ": scan-like, few creases and more detail than noise)"
       : despiked ? " (at most " + fixed(kAlphaMaxScanLike, 0) + " after the spike removal)"
@@ -396,7 +409,7 @@ std::string ResolvedPreset::reason() const {
                                 : "";
   return "chosen automatically (" + sampled + small + noise.summary() + spikes + s + detail + ": alpha " +
          fixed(options.normals.alpha, 2) + cap + ", prefilter " + std::to_string(options.prefilter_iterations) +
-         polish + tangential + jets + "; " + choice.reason + quadric + ")";
+         polish + tangential + across + jets + "; " + choice.reason + quadric + ")";
 }
 
 ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
@@ -522,6 +535,12 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   if (r.detail_as_noise > 0) {
     r.options.jet_rings = 0;
     r.options.unreachable_angle = 0;
+  }
+  if (r.preset == "cad" && !r.featureless && !r.despiked && measured.across_ratio >= kAcrossRatio) {
+    const double share = std::clamp(
+        (strength * measured.sigma_rms - kAcrossFairnessFrom) / (kAcrossFairnessTo - kAcrossFairnessFrom), 0.0, 1.0);
+    double& omega2 = r.options.vertices.omega2;
+    omega2 += share * std::max(0.0, kAcrossFairness - omega2);
   }
   if (r.featureless) {
     r.options.normals.polish = kFeaturelessPolish;

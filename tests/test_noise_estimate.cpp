@@ -100,3 +100,25 @@ TEST(NoiseEstimate, BadMeshesAreRefused) {
   m.V(0, 0) = std::nan("");
   EXPECT_THROW(estimate_noise(m.V, m.F), InvalidInput);
 }
+
+TEST(NoiseEstimate, TellsNoiseAcrossTheNormalsFromNoiseAlongThem) {
+  // Heavy noise on a part: in random directions the residuals go across the normals about
+  // √2 times as far as along them (two directions across for one along); along the normals
+  // mostly along them. The figure is a ratio: invariant under scale, turn and translation.
+  for (const char* name : {"fandisk", "cube"}) {
+    const Mesh m = make_shape(name, 24);
+    for (const double sigma : {0.5, 0.7}) {
+      const NoiseEstimate random = estimate_noise(seeded(m, sigma, NoiseDirection::Random), m.F);
+      const NoiseEstimate along = estimate_noise(seeded(m, sigma), m.F);
+      EXPECT_GT(random.across_ratio, 1.25) << name << " " << sigma;
+      EXPECT_LT(random.across_ratio, 2.0) << name << " " << sigma;
+      EXPECT_LT(along.across_ratio, 1.0) << name << " " << sigma;
+    }
+  }
+  const Mesh m = make_shape("fandisk", 24);
+  const Eigen::MatrixXd noisy = seeded(m, 0.7, NoiseDirection::Random);
+  Eigen::Matrix3d R;
+  R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, -1).normalized());
+  const Eigen::MatrixXd moved = ((noisy * R.transpose()) * 40.0).rowwise() + Eigen::RowVector3d(5, -2, 9);
+  EXPECT_NEAR(estimate_noise(moved, m.F).across_ratio, estimate_noise(noisy, m.F).across_ratio, 1e-9);
+}

@@ -460,3 +460,29 @@ TEST(Presets, DetailThatStandsOutOfTheNoiseEasesTheRules) {
   EXPECT_EQ(plain.detail_ease, 1.0) << plain.reason();
   EXPECT_EQ(plain.reason().find("x for the detail"), std::string::npos) << plain.reason();
 }
+
+TEST(Presets, HeavyNoiseAcrossTheNormalsRaisesAPartsFairness) {
+  // A CAD part under heavy noise in random directions: the class cad's fairness ω₂ rises from
+  // 0.03 to 0.1 (σ_rms ≥ 0.4), and the summary says why; the same σ along the normals, or a
+  // lighter noise, keep 0.03.
+  const Mesh m = make_shape("fandisk", 24);
+  const auto resolved = [&](double sigma, NoiseDirection d) {
+    NoiseOptions no;
+    no.sigma = sigma;
+    no.direction = d;
+    no.seed = 3;
+    return resolve_preset("auto", add_noise(m.V, m.F, no), m.F);
+  };
+  const ResolvedPreset random = resolved(0.7, NoiseDirection::Random);
+  ASSERT_EQ(random.preset, "cad") << random.reason();
+  ASSERT_GE(random.noise.sigma_rms, 0.4) << random.reason();
+  EXPECT_NEAR(random.options.vertices.omega2, 0.1, 1e-12) << random.reason();
+  EXPECT_NE(random.reason().find("noise across the normals"), std::string::npos) << random.reason();
+  const ResolvedPreset along = resolved(0.7, NoiseDirection::Normal);
+  ASSERT_EQ(along.preset, "cad") << along.reason();
+  EXPECT_EQ(along.options.vertices.omega2, preset_options("cad").vertices.omega2) << along.reason();
+  EXPECT_EQ(along.reason().find("noise across the normals"), std::string::npos) << along.reason();
+  const ResolvedPreset light = resolved(0.2, NoiseDirection::Random);
+  ASSERT_LT(light.noise.sigma_rms, 0.25) << light.reason();
+  EXPECT_EQ(light.options.vertices.omega2, preset_options("cad").vertices.omega2) << light.reason();
+}

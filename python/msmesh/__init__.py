@@ -174,6 +174,7 @@ def _resolve_preset(V, F, preset, report, strength=1.0):
             "noise_outlier_fraction",
             "noise_sigma_noise",
             "noise_detail",
+            "noise_across_ratio",
             "noise_level_used",
             "noise_detail_as_noise",
             "noise_detail_ease",
@@ -195,7 +196,9 @@ def estimate_noise(V: ArrayLike, F: ArrayLike) -> Dict[str, Any]:
     edge lengths), sigma_rms (RMS of the same residuals; well above sigma under impulsive
     noise), outlier_fraction (vertices beyond 4 sigma), sigma_noise and detail (sigma split
     into the noise alone and the shape's own fine detail and creases, which a low pass also
-    removes: sigma**2 = sigma_noise**2 + detail**2) and summary (one line). 'auto' sets its
+    removes: sigma**2 = sigma_noise**2 + detail**2), across_ratio (RMS of the residuals across
+    the normals over along them: 1.35-1.65 for heavy noise in random directions, below 1 along
+    the normals) and summary (one line). 'auto' sets its
     parameters from sigma_rms, for organic shapes without their detail (docs/presets.md).
     """
     V, F = _checks.mesh(V, F)

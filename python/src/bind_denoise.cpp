@@ -92,6 +92,7 @@ py::dict estimate_noise_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi&
   d["outlier_fraction"] = e.outlier_fraction;
   d["sigma_noise"] = e.sigma_noise;
   d["detail"] = e.detail;
+  d["across_ratio"] = e.across_ratio;
   d["summary"] = e.summary();
   return d;
 }

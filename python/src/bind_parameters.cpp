@@ -135,6 +135,7 @@ py::dict resolve_preset_binding(const std::string& name, const Eigen::MatrixXd& 
     d["noise_outlier_fraction"] = r.noise.outlier_fraction;
     d["noise_sigma_noise"] = r.noise.sigma_noise;
     d["noise_detail"] = r.noise.detail;
+    d["noise_across_ratio"] = r.noise.across_ratio;
     d["noise_level_used"] = r.sigma;
     d["noise_detail_as_noise"] = r.detail_as_noise;
     d["noise_detail_ease"] = r.detail_ease;

@@ -104,6 +104,7 @@ def test_noise_estimate_and_strength(noisy_fandisk):
     _, r = msmesh.denoise(V, F)
     assert r["noise_sigma_rms"] == pytest.approx(e["sigma_rms"]) and r["strength"] == 1.0
     assert r["noise_sigma_noise"] == pytest.approx(e["sigma_noise"]) and r["noise_detail"] == pytest.approx(e["detail"])
+    assert 0 < e["across_ratio"] < 1 and r["noise_across_ratio"] == pytest.approx(e["across_ratio"])  # along the normals
     assert "noise sigma" in r["preset_reason"]
     assert 0 <= r["auto_crease_line_fraction"] <= r["auto_sharp_fraction"]
     assert 0 <= r["auto_steep_line_fraction"] <= r["auto_crease_line_fraction"]
