@@ -31,6 +31,21 @@ void expect_same_parameters(const ParameterTable<Options>& table, const Options&
   for (const Parameter<Options>& p : table) EXPECT_EQ(p.get(a), p.get(b)) << what << ": " << p.info.name;
 }
 
+/// A sphere (`shape sphere 24`) with fine waves of its own: 12 plane waves 2.5 mean edges long,
+/// RMS 0.25 mean edges, along the normals.
+Eigen::MatrixXd wavy_sphere(const Mesh& sphere) {
+  const double h = mean_edge_length(sphere.V, sphere.F);
+  const double k = 2 * M_PI / (2.5 * h);
+  Eigen::VectorXd wave = Eigen::VectorXd::Zero(sphere.V.rows());
+  for (int i = 0; i < 12; ++i) {
+    const Eigen::Vector3d d = Eigen::Vector3d(std::cos(2.4 * i), std::sin(1.7 * i + 0.3), std::cos(0.9 * i + 1.1))
+                                  .normalized();  // 12 fixed directions
+    wave += ((sphere.V * d).array() * k + 0.7 * i).sin().matrix();
+  }
+  wave *= 0.25 * h / std::sqrt(wave.squaredNorm() / static_cast<double>(wave.size()));
+  return sphere.V + sphere.V.rowwise().normalized().cwiseProduct(wave.replicate(1, 3));
+}
+
 }  // namespace
 
 TEST(Presets, StructDefaultsAreTheCadPreset) {
@@ -432,16 +447,7 @@ TEST(Presets, DetailThatStandsOutOfTheNoiseEasesTheRules) {
   // every rule takes a lower σ, and the result keeps more of the waves than at the σ without
   // the ease (strength = the ease undoes it). The plain sphere with the same noise is not eased.
   const Mesh sphere = make_shape("sphere", 24);
-  const double h = mean_edge_length(sphere.V, sphere.F);
-  const double k = 2 * M_PI / (2.5 * h);
-  Eigen::VectorXd wave = Eigen::VectorXd::Zero(sphere.V.rows());
-  for (int i = 0; i < 12; ++i) {
-    const Eigen::Vector3d d = Eigen::Vector3d(std::cos(2.4 * i), std::sin(1.7 * i + 0.3), std::cos(0.9 * i + 1.1))
-                                  .normalized();  // 12 fixed directions
-    wave += ((sphere.V * d).array() * k + 0.7 * i).sin().matrix();
-  }
-  wave *= 0.25 * h / std::sqrt(wave.squaredNorm() / static_cast<double>(wave.size()));
-  const Eigen::MatrixXd detailed = sphere.V + sphere.V.rowwise().normalized().cwiseProduct(wave.replicate(1, 3));
+  const Eigen::MatrixXd detailed = wavy_sphere(sphere);
   NoiseOptions no;
   no.sigma = 0.15;
   no.seed = 3;
@@ -485,4 +491,38 @@ TEST(Presets, HeavyNoiseAcrossTheNormalsRaisesAPartsFairness) {
   const ResolvedPreset light = resolved(0.2, NoiseDirection::Random);
   ASSERT_LT(light.noise.sigma_rms, 0.25) << light.reason();
   EXPECT_EQ(light.options.vertices.omega2, preset_options("cad").vertices.omega2) << light.reason();
+}
+
+TEST(Presets, ModerateNoiseAlongTheNormalsOfAnOrganicShapeKeepsItsTrianglesInPlace) {
+  // The wavy sphere (class smooth) under σ 0.3 along the normals: the fairness acts mostly
+  // along the normals (τ well below 1), the summary says why, and the result keeps more of the
+  // waves than with the whole fairness term; the same surface under noise in random directions
+  // of about the same σ_rms keeps τ 1.
+  const Mesh sphere = make_shape("sphere", 24);
+  const Eigen::MatrixXd detailed = wavy_sphere(sphere);
+  const auto resolved = [&](double sigma, NoiseDirection d) {
+    NoiseOptions no;
+    no.sigma = sigma;
+    no.direction = d;
+    no.seed = 5;
+    return resolve_preset("auto", add_noise(detailed, sphere.F, no), sphere.F);
+  };
+  const ResolvedPreset along = resolved(0.3, NoiseDirection::Normal);
+  ASSERT_EQ(along.preset, "smooth") << along.reason();
+  ASSERT_LT(along.noise.across_ratio, 0.8) << along.reason();
+  EXPECT_LT(along.options.vertices.fairness_tangential, 0.5) << along.reason();
+  EXPECT_NE(along.reason().find("(noise along the normals"), std::string::npos) << along.reason();
+  NoiseOptions no;
+  no.sigma = 0.3;
+  no.seed = 5;
+  const Eigen::MatrixXd noisy = add_noise(detailed, sphere.F, no);
+  DenoiseOptions whole = along.options;
+  whole.vertices.fairness_tangential = 1;
+  const double e_rule = normal_errors(denoise(noisy, sphere.F, along.options).V, sphere.F, detailed, sphere.F).msae;
+  const double e_whole = normal_errors(denoise(noisy, sphere.F, whole).V, sphere.F, detailed, sphere.F).msae;
+  EXPECT_LT(e_rule, e_whole) << e_whole << " -> " << e_rule;
+  const ResolvedPreset random = resolved(0.5, NoiseDirection::Random);
+  ASSERT_EQ(random.preset, "smooth") << random.reason();
+  ASSERT_GT(random.noise.sigma_rms, 0.25) << random.reason();
+  EXPECT_EQ(random.options.vertices.fairness_tangential, 1.0) << random.reason();
 }
