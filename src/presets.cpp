@@ -399,14 +399,14 @@ std::string ResolvedPreset::reason() const {
   const std::string tangential =
       options.vertices.fairness_tangential < 1
           ? ", fairness along the surface " + fixed(options.vertices.fairness_tangential, 2) +
-                (preset == "smooth" ? " (noise along the normals, " + fixed(noise.across_ratio, 2) + " of it across)"
+                (preset == "smooth" ? " (noise along the normals: " + fixed(noise.across_ratio, 2) + " as much across)"
                                     : "")
           : "";
   const std::string jets = options.jet_rings > 0 ? "" : ", no jet-fitted or dropped targets (long waves of noise)";
   const std::string across =
       preset == "cad" && !featureless && options.vertices.omega2 > preset_options("cad").vertices.omega2
-          ? ", fairness " + fixed(options.vertices.omega2, 3) + " (noise across the normals, " +
-                fixed(noise.across_ratio, 2) + " of it along them)"
+          ? ", fairness " + fixed(options.vertices.omega2, 3) +
+                " (noise across the normals: " + fixed(noise.across_ratio, 2) + " times as much as along)"
           : "";
   const std::string cap =
       scan_like  ? " (at most " + fixed(kAlphaMaxScanLike, 0) + ": scan-like, few creases and more detail than noise)"

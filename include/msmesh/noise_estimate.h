@@ -25,9 +25,9 @@ struct NoiseEstimate {
   double detail = 0;
   /// RMS of the residuals' part across the normals (V − S less its part along them) over their
   /// RMS along them: which way the noise goes, once it is well above the triangulation's own
-  /// irregularity (σ ≳ 0.3). Noise in random directions reads 1.35–1.65 there (two directions
-  /// across for one along), noise along the normals 0.27–0.73 (docs/presets.md, "Heavy noise in
-  /// random directions on CAD parts").
+  /// irregularity (σ_rms ≳ 0.25). Noise in random directions reads 1.3–1.9 there (two directions
+  /// across for one along), noise along the normals 0.1–1.0 (1.17 on an irregular Kinect scan)
+  /// (docs/presets.md, "Heavy noise in random directions on CAD parts").
   double across_ratio = 0;
   std::string summary()
       const;  ///< "noise sigma 0.310 (rms 0.330, outliers 0.2 %; shape detail 0.050, noise alone 0.306)"

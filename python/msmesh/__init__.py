@@ -197,8 +197,8 @@ def estimate_noise(V: ArrayLike, F: ArrayLike) -> Dict[str, Any]:
     noise), outlier_fraction (vertices beyond 4 sigma), sigma_noise and detail (sigma split
     into the noise alone and the shape's own fine detail and creases, which a low pass also
     removes: sigma**2 = sigma_noise**2 + detail**2), across_ratio (RMS of the residuals across
-    the normals over along them: 1.35-1.65 for heavy noise in random directions, below 1 along
-    the normals) and summary (one line). 'auto' sets its
+    the normals over along them: 1.3-1.9 for heavy noise in random directions, mostly below 1
+    along the normals) and summary (one line). 'auto' sets its
     parameters from sigma_rms, for organic shapes without their detail (docs/presets.md).
     """
     V, F = _checks.mesh(V, F)
