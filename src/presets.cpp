@@ -194,6 +194,9 @@ int prefilter_for(double sigma, bool smooth = false) {
   return static_cast<int>(std::lround(std::clamp((sigma - kPrefilterFrom) * slope, 0.0, double(most))));
 }
 
+/// 0 at `from`, 1 at `to`, linear between and clamped outside (falling where to < from).
+double ramp(double x, double from, double to) { return std::clamp((x - from) / (to - from), 0.0, 1.0); }
+
 std::string fixed(double x, int digits) {
   std::ostringstream os;
   os.setf(std::ios::fixed);
@@ -537,7 +540,7 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
   if (few_creases && !r.despiked) {
     const double rms = measured.sigma_rms, d = measured.detail;
     const double ratio = d / std::max(measured.sigma_noise, std::numeric_limits<double>::min());
-    r.detail_as_noise = std::clamp((ratio - kScanDetailRampFrom) / (1.0 - kScanDetailRampFrom), 0.0, 1.0);
+    r.detail_as_noise = ramp(ratio, kScanDetailRampFrom, 1.0);
     const double k = detail_counted_times(r.detail_as_noise);
     r.sigma = strength * std::sqrt(rms * rms + (k * k - 1) * d * d);
   }
@@ -551,17 +554,14 @@ ResolvedPreset resolve_preset(const std::string& name, const Eigen::MatrixXd& V,
     r.options.unreachable_angle = 0;
   }
   if (r.preset == "cad" && !r.featureless && !r.despiked && measured.across_ratio >= kAcrossRatio) {
-    const double share = std::clamp(
-        (strength * measured.sigma_rms - kAcrossFairnessFrom) / (kAcrossFairnessTo - kAcrossFairnessFrom), 0.0, 1.0);
+    const double share = ramp(strength * measured.sigma_rms, kAcrossFairnessFrom, kAcrossFairnessTo);
     double& omega2 = r.options.vertices.omega2;
     omega2 += share * std::max(0.0, kAcrossFairness - omega2);
   }
   if (r.preset == "smooth" && !r.despiked) {
     const double s = strength * measured.sigma_rms;
-    const double w_sigma = std::clamp((s - kAlongSigmaFrom) / (kAlongSigmaFull - kAlongSigmaFrom), 0.0, 1.0) *
-                           std::clamp((kAlongSigmaTo - s) / (kAlongSigmaTo - kAlongSigmaFade), 0.0, 1.0);
-    const double w_direction =
-        std::clamp((kAlongRatioTo - measured.across_ratio) / (kAlongRatioTo - kAlongRatioFrom), 0.0, 1.0);
+    const double w_sigma = ramp(s, kAlongSigmaFrom, kAlongSigmaFull) * ramp(s, kAlongSigmaTo, kAlongSigmaFade);
+    const double w_direction = ramp(measured.across_ratio, kAlongRatioTo, kAlongRatioFrom);
     r.options.vertices.fairness_tangential = 1 - (1 - kAlongTangential) * w_sigma * w_direction;
   }
   if (r.featureless) {
