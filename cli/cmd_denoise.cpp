@@ -18,6 +18,7 @@
 #include "msmesh/parameters.h"
 #include "msmesh/presets.h"
 #include "msmesh/repair.h"
+#include "msmesh/second_round.h"
 #include "msmesh/threads.h"
 #include "msmesh/topology.h"
 #include "number_option.h"
@@ -84,18 +85,24 @@ void run(const Args& a) {
   const ResolvedPreset preset =
       resolve_preset(method == DenoiseMethod::Bilateral && a.preset == "auto" ? "cad" : a.preset, mesh.V, mesh.F,
                      method == DenoiseMethod::Bilateral ? 1.0 : a.strength);
+  // The user's method, overrides and solver, on the preset's options (and on a second round's).
+  const AdjustOptions adjust = [&](DenoiseOptions& o) {
+    o.method = method;
+    a.parameters->apply(o);
+    o.normals.solver = o.vertices.solver = a.solver == "cholesky" ? LinearSolver::Cholesky
+                                           : a.solver == "cg"     ? LinearSolver::CG
+                                                                  : LinearSolver::Auto;
+    o.validate();
+  };
   DenoiseOptions o = preset.options;
-  o.method = method;
-  a.parameters->apply(o);
-  o.normals.solver = o.vertices.solver = a.solver == "cholesky" ? LinearSolver::Cholesky
-                                         : a.solver == "cg"     ? LinearSolver::CG
-                                                                : LinearSolver::Auto;
-  o.validate();
+  adjust(o);
 
   Mesh truth;
   if (!a.truth.empty()) truth = read_mesh(a.truth);
 
-  const DenoiseResult r = denoise(mesh.V, mesh.F, o, make_progress_bar(a.quiet || a.json));
+  SecondRound second;
+  const DenoiseResult r =
+      denoise_in_rounds(mesh.V, mesh.F, preset, o, adjust, make_progress_bar(a.quiet || a.json), &second);
   finish_progress_line();
   Mesh out = mesh;  // same faces, order and every attribute; normals recomputed for the result
   out.V = r.V;
@@ -115,9 +122,16 @@ void run(const Args& a) {
     ev_in = evaluate(mesh.V, mesh.F, truth.V, truth.F);
     ev_out = evaluate(out.V, out.F, truth.V, truth.F);
   }
+  // What the second round ran (auto under heavy noise), for the summary and the report.
+  const std::string second_text = second.weight > 0
+                                      ? "weight " + fmt(second.weight, 2) + ", auto on the result: preset " +
+                                            second.preset.preset + ", " + second.preset.reason()
+                                      : "";
   if (!a.report.empty())
     write_denoise_report(a.report, a.input, mesh, out.V, a.truth.empty() ? nullptr : &truth, a.method,
-                         preset.preset + (preset.automatic ? ", " + preset.reason() : ""), o, r, ev_in, ev_out);
+                         preset.preset + (preset.automatic ? ", " + preset.reason() : "") +
+                             (second.weight > 0 ? "; second round " + second_text : ""),
+                         o, r, ev_in, ev_out);
   plan.commit();
 
   if (a.json) {
@@ -142,7 +156,12 @@ void run(const Args& a) {
           .add("noise_sigma_rms_despiked", preset.noise_despiked.sigma_rms)
           .add("auto_quadric_excess", preset.quadric_excess)
           .add("auto_featureless_limit", preset.featureless_limit)
-          .add("auto_featureless", preset.featureless);
+          .add("auto_featureless", preset.featureless)
+          .add("auto_second_round", preset.second_round);
+    if (second.weight > 0)
+      j.add("second_round_preset", second.preset.preset)
+          .add("second_round_reason", second.preset.reason())
+          .add("second_round_noise_sigma_rms", second.preset.noise.sigma_rms);
     j.add("strength", preset.strength);
     j.add("vertices", static_cast<long long>(mesh.V.rows())).add("faces", static_cast<long long>(mesh.F.rows()));
     j.add("dropped_degenerate_faces", static_cast<long long>(notes.dropped_degenerate));
@@ -202,6 +221,7 @@ void run(const Args& a) {
     if (preset.automatic) std::cout << ", " << preset.reason();
   }
   std::cout << "\n";
+  if (second.weight > 0) std::cout << "  second round:     " << second_text << "\n";
   if (o.method != DenoiseMethod::Bilateral) {
     if (o.despike_threshold > 0)
       std::cout << "  spikes:           " << r.despiked_vertices << " vertices moved onto the low-pass surface\n";

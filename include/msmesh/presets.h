@@ -103,6 +103,11 @@ struct ResolvedPreset {
   /// and ω₂ 3 (docs/presets.md, "Featureless smooth surfaces").
   double quadric_excess = 0, featureless_limit = 0;
   bool featureless = false;
+  /// Heavy noise (auto): the weight of a second round, ramp(strength × noise.sigma_rms, 0.3, 0.4)
+  /// (0 below 0.3, 1 from 0.4): auto again on the result, its positions blended into this round's
+  /// with this weight (second_round.h; docs/presets.md, "A second round under heavy noise"). 0
+  /// for a named preset.
+  double second_round = 0;
 
   /// Large meshes (auto): the faces measured, the cores of sample_patches patches spread over
   /// the mesh (0: the whole mesh was measured).

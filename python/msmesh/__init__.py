@@ -130,7 +130,9 @@ def _apply_parameters(options, params, table, function, solvers=()):
     """Sets keyword parameters on an options object through the library's table (`table`, from
     _table()). Unknown names are a TypeError (as for any Python function); a value of the wrong
     type, out of range, not whole (int) or not a bool is an InvalidInputError naming it.
-    `solvers`: the option sets ('normals', 'vertices') that 'solver' sets, if accepted."""
+    `solvers`: the option sets ('normals', 'vertices') that 'solver' sets, if accepted.
+    Returns the values set, by name ('solver' aside)."""
+    values = {}
     for name, value in params.items():
         if name == "solver" and solvers:
             value = _SOLVERS[_checks.choice(value, name, tuple(_SOLVERS))]
@@ -149,6 +151,8 @@ def _apply_parameters(options, params, table, function, solvers=()):
         else:
             value = _checks.real(value, name)
         _core.set_parameter(options, name, float(value))
+        values[name] = float(value)
+    return values
 
 
 def _resolve_preset(V, F, preset, report, strength=1.0):
@@ -185,6 +189,7 @@ def _resolve_preset(V, F, preset, report, strength=1.0):
         report["auto_quadric_excess"] = r["quadric_excess"]
         report["auto_featureless_limit"] = r["featureless_limit"]
         report["auto_featureless"] = r["featureless"]
+        report["auto_second_round"] = r["second_round"]
     report["strength"] = r["strength"]
     return r["options"]
 
@@ -256,8 +261,10 @@ def denoise(V: ArrayLike, F: ArrayLike, preset: str = DEFAULT_PRESET, method: st
     options = _resolve_preset(V, F, "cad" if method == "bilateral" and preset == "auto" else preset, report,
                               strength)
     options.method = _METHODS[method]
-    _apply_parameters(options, params, PARAMETERS, "denoise", solvers=("normals", "vertices"))
-    result = _core.denoise(V, F, options, progress)
+    overrides = _apply_parameters(options, params, PARAMETERS, "denoise", solvers=("normals", "vertices"))
+    # Auto under heavy noise: a second round on the result, blended in (docs/presets.md).
+    result = _core.denoise(V, F, options, progress, report.get("auto_second_round", 0.0), report["strength"],
+                           overrides)
     V_new = result.pop("V")
     report["method"] = method
     report["parameters"] = _core.parameters(options)

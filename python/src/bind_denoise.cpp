@@ -1,11 +1,15 @@
 // Bindings of denoising: the option structs of Algorithms 1 and 2 and of the bilateral
 // baseline, presets, denoise(), filter_normals(), update_vertices() and the thread setting.
+#include <map>
 #include <string>
 
 #include "bindings.h"
 #include "msmesh/denoise.h"
+#include "msmesh/errors.h"
 #include "msmesh/noise_estimate.h"
+#include "msmesh/parameters.h"
 #include "msmesh/presets.h"
+#include "msmesh/second_round.h"
 #include "msmesh/taubin.h"
 #include "msmesh/topology.h"
 
@@ -15,11 +19,36 @@ namespace msmesh::python {
 
 namespace {
 
+// denoise_in_rounds (second_round.h): `second_round` and `strength` are those auto resolved
+// (0: one round, as denoise()); the second round's options get the first's method and solvers and
+// `overrides` (the caller's parameters, by name).
 py::dict denoise_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const DenoiseOptions& options,
-                         const py::object& progress) {
-  const DenoiseResult r =
-      run_without_gil(progress, [&](const ProgressCallback& cb) { return denoise(V, F, options, cb); });
+                         const py::object& progress, double second_round, double strength,
+                         const std::map<std::string, double>& overrides) {
+  ResolvedPreset first;
+  first.automatic = second_round > 0;
+  first.second_round = second_round;
+  first.strength = strength;
+  const AdjustOptions adjust = [&](DenoiseOptions& o) {
+    o.method = options.method;
+    o.normals.solver = options.normals.solver;
+    o.vertices.solver = options.vertices.solver;
+    for (const auto& [name, value] : overrides) {
+      const Parameter<DenoiseOptions>* p = find_parameter(denoise_parameters(), name);
+      if (!p) throw InvalidInput("unknown parameter '" + name + "'");
+      p->set(o, value);
+    }
+  };
+  SecondRound second;
+  const DenoiseResult r = run_without_gil(progress, [&](const ProgressCallback& cb) {
+    return denoise_in_rounds(V, F, first, options, adjust, cb, &second);
+  });
   py::dict d = normal_report(r.normal_report);
+  if (second.weight > 0) {
+    d["second_round_preset"] = second.preset.preset;
+    d["second_round_reason"] = second.preset.reason();
+    d["second_round_noise_sigma_rms"] = second.preset.noise.sigma_rms;
+  }
   add_vertex_report(d, r.vertex_report);
   d["V"] = to_numpy(r.V);
   d["normals"] = to_numpy(r.normals);
@@ -188,7 +217,9 @@ void bind_denoise(py::module_& m) {
   m.def("estimate_noise", &estimate_noise_binding, py::arg("V"), py::arg("F"));
   m.def("taubin_smooth", &taubin_binding, py::arg("V"), py::arg("F"), py::arg("iterations"), py::arg("lambda_"),
         py::arg("mu"));
-  m.def("denoise", &denoise_binding, py::arg("V"), py::arg("F"), py::arg("options"), py::arg("progress") = py::none());
+  m.def("denoise", &denoise_binding, py::arg("V"), py::arg("F"), py::arg("options"), py::arg("progress") = py::none(),
+        py::arg("second_round") = 0.0, py::arg("strength") = 1.0,
+        py::arg("overrides") = std::map<std::string, double>{});
   m.def("filter_normals", &filter_normals_binding, py::arg("V"), py::arg("F"), py::arg("options"), py::arg("normals0"),
         py::arg("progress") = py::none());
   m.def("update_vertices", &update_vertices_binding, py::arg("V"), py::arg("F"), py::arg("N"), py::arg("v"),

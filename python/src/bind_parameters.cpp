@@ -144,6 +144,7 @@ py::dict resolve_preset_binding(const std::string& name, const Eigen::MatrixXd& 
     d["quadric_excess"] = r.quadric_excess;
     d["featureless_limit"] = r.featureless_limit;
     d["featureless"] = r.featureless;
+    d["second_round"] = r.second_round;
   }
   d["strength"] = r.strength;
   return d;

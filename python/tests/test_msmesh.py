@@ -133,6 +133,21 @@ def test_a_featureless_surface_is_reported():
     assert c["auto_featureless"] is False
 
 
+def test_a_second_round_under_heavy_noise():
+    # Auto runs a second round on its result under heavy noise (weight 1 from sigma_rms 0.4), the
+    # same as the CLI's; the caller's parameters reach both rounds.
+    V, F = msmesh.make_shape("cube", 12)
+    noisy = msmesh.add_noise(V, F, sigma=0.7, seed=3)
+    W, r = msmesh.denoise(noisy, F)
+    assert r["auto_second_round"] == 1.0, r["preset_reason"]
+    assert r["second_round_reason"].startswith("chosen automatically")
+    one, _ = msmesh.denoise(noisy, F, preset=r["preset"], **r["parameters"])
+    again, _ = msmesh.denoise(one, F)
+    np.testing.assert_allclose(W, again, atol=1e-12)
+    _, light = msmesh.denoise(msmesh.add_noise(V, F, sigma=0.1, seed=3), F)
+    assert light["auto_second_round"] == 0.0 and "second_round_reason" not in light
+
+
 def test_small_components_are_kept_and_reported():
     S, G = msmesh.make_shape("sphere", 8)
     C, H = msmesh.make_shape("cube", 1)  # 12 triangles
@@ -151,7 +166,7 @@ def test_small_components_are_kept_and_reported():
 
 def test_unreachable_targets_are_reported():
     V, F = msmesh.make_shape("fandisk", 16)
-    noisy = msmesh.add_noise(V, F, sigma=0.3, seed=3)
+    noisy = msmesh.add_noise(V, F, sigma=0.25, seed=3)  # one round (no second round below 0.3)
     out, r = msmesh.denoise(noisy, F)
     assert r["preset"] == "cad" and r["parameters"]["unreachable_angle"] == 10
     assert 0 < r["unreachable_faces"] < len(F) // 50

@@ -221,12 +221,13 @@ TEST(DenoiseCli, JetFittedTargetsAreReportedAndCanBeSwitchedOff) {
 }
 
 TEST(DenoiseCli, UnreachableTargetsAreReportedAndCanBeSwitchedOff) {
-  // On a noisy fandisk (σ 0.3) Algorithm 1 gives some faces beside its creases the other side's
-  // normal: the defaults drop those targets (--unreachable-angle 10 for the class cad), and the
-  // JSON and the summary say how many; --unreachable-angle 0, presets smooth and paper drop none.
+  // On a noisy fandisk (σ 0.25: one round) Algorithm 1 gives some faces beside its creases the
+  // other side's normal: the defaults drop those targets (--unreachable-angle 10 for the class
+  // cad), and the JSON and the summary say how many; --unreachable-angle 0, presets smooth and
+  // paper drop none.
   const TempDir d;
   const std::string clean = d.file("fandisk.obj"), noisy = d.file("noisy.obj"), out = d.file("out.obj");
-  ASSERT_NO_FATAL_FAILURE(noisy_shape("fandisk --resolution 16", "--sigma 0.3 --seed 3", clean, noisy));
+  ASSERT_NO_FATAL_FAILURE(noisy_shape("fandisk --resolution 16", "--sigma 0.25 --seed 3", clean, noisy));
   const auto on = run_cli("denoise " + noisy + " -o " + out + " --json");
   ASSERT_EQ(on.status, 0) << on.out;
   EXPECT_NE(on.out.find("\"preset\":\"cad\""), std::string::npos) << on.out;
@@ -267,4 +268,24 @@ TEST(DenoiseCli, PlanarRegionsAreReportedAndCanBeSwitchedOff) {
   const auto bad = run_cli("denoise " + noisy + " -o " + out + " --planes -1");
   EXPECT_NE(bad.status, 0);
   EXPECT_NE(bad.out.find("planes"), std::string::npos) << bad.out;
+}
+
+TEST(DenoiseCli, ASecondRoundUnderHeavyNoiseIsReported) {
+  // A cube under σ 0.7: auto runs a second round on the result (weight 1) and says so in the
+  // summary and the JSON; under σ 0.1 the JSON gives weight 0 and no second round.
+  const TempDir d;
+  const std::string cube = d.file("cube.obj"), noisy = d.file("noisy.obj"), out = d.file("out.obj");
+  ASSERT_NO_FATAL_FAILURE(noisy_shape("cube --resolution 12", "--sigma 0.7 --seed 3", cube, noisy));
+  const auto json = run_cli("denoise " + noisy + " -o " + out + " --json");
+  ASSERT_EQ(json.status, 0) << json.out;
+  EXPECT_NE(json.out.find("\"auto_second_round\":1"), std::string::npos) << json.out;
+  EXPECT_NE(json.out.find("\"second_round_reason\":\"chosen automatically"), std::string::npos) << json.out;
+  const auto summary = run_cli("denoise " + noisy + " -o " + out);
+  ASSERT_EQ(summary.status, 0) << summary.out;
+  EXPECT_NE(summary.out.find("second round:     weight 1, auto on the result"), std::string::npos) << summary.out;
+  ASSERT_NO_FATAL_FAILURE(noisy_shape("cube --resolution 12", "--sigma 0.1 --seed 3", cube, noisy));
+  const auto light = run_cli("denoise " + noisy + " -o " + out + " --json");
+  ASSERT_EQ(light.status, 0) << light.out;
+  EXPECT_NE(light.out.find("\"auto_second_round\":0"), std::string::npos) << light.out;
+  EXPECT_EQ(light.out.find("second_round_reason"), std::string::npos) << light.out;
 }

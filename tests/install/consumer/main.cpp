@@ -1,12 +1,13 @@
 // A program built against the installed msmesh package (find_package(msmesh), targets
-// msmesh::core and msmesh::io): reads a mesh, denoises it with the preset `msmesh denoise`
-// would choose ("auto"), writes the result.
+// msmesh::core and msmesh::io): reads a mesh, denoises it as `msmesh denoise` does (preset
+// "auto", with its second round under heavy noise), writes the result.
 //   msmesh_consumer noisy.obj denoised.obj
 #include <msmesh/denoise.h>
 #include <msmesh/errors.h>
 #include <msmesh/geometry.h>
 #include <msmesh/io.h>
 #include <msmesh/presets.h>
+#include <msmesh/second_round.h>
 
 #include <iostream>
 
@@ -18,7 +19,7 @@ int main(int argc, char** argv) {
   try {
     msmesh::Mesh mesh = msmesh::read_mesh(argv[1]);
     const msmesh::ResolvedPreset preset = msmesh::resolve_preset("auto", mesh.V, mesh.F);
-    const msmesh::DenoiseResult result = msmesh::denoise(mesh.V, mesh.F, preset.options);
+    const msmesh::DenoiseResult result = msmesh::denoise_in_rounds(mesh.V, mesh.F, preset, preset.options, {});
     mesh.V = result.V;
     if (mesh.vertex_normals.rows() > 0) mesh.vertex_normals = msmesh::vertex_normals(mesh.V, mesh.F);
     msmesh::write_mesh(argv[2], mesh);
