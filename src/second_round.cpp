@@ -8,7 +8,7 @@ DenoiseResult denoise_in_rounds(const Eigen::MatrixXd& V, const Eigen::MatrixXi&
                                 const DenoiseOptions& options, const AdjustOptions& adjust,
                                 const ProgressCallback& progress, SecondRound* second) {
   DenoiseResult r = denoise(V, F, options, progress);
-  const double w = first.automatic ? first.second_round : 0.0;
+  const double w = first.second_round;  // 0 unless auto asked for one
   if (second) *second = SecondRound{};
   if (!(w > 0)) return r;
   ResolvedPreset again = resolve_preset("auto", r.V, F, first.strength);

@@ -26,8 +26,8 @@ struct SecondRound {
 /// the second round: resolve_preset("auto") on the result at first.strength, `adjust` on its
 /// options, denoise() of the result, and the positions (1 − w) V₁ + w V₂, w = first.second_round.
 /// The result's filtered normals, edge field and reports are the second round's (the field of
-/// the cleaner mesh), its times the sum of both rounds'. `second` (optional) receives what the
-/// second round ran. Throws as denoise().
+/// the cleaner mesh), its times and despiked vertices the sums of both rounds'. `second`
+/// (optional) receives what the second round ran. Throws as denoise().
 DenoiseResult denoise_in_rounds(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const ResolvedPreset& first,
                                 const DenoiseOptions& options, const AdjustOptions& adjust,
                                 const ProgressCallback& progress = {}, SecondRound* second = nullptr);

@@ -5,9 +5,7 @@
 
 #include "bindings.h"
 #include "msmesh/denoise.h"
-#include "msmesh/errors.h"
 #include "msmesh/noise_estimate.h"
-#include "msmesh/parameters.h"
 #include "msmesh/presets.h"
 #include "msmesh/second_round.h"
 #include "msmesh/taubin.h"
@@ -26,18 +24,13 @@ py::dict denoise_binding(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, con
                          const py::object& progress, double second_round, double strength,
                          const std::map<std::string, double>& overrides) {
   ResolvedPreset first;
-  first.automatic = second_round > 0;
   first.second_round = second_round;
   first.strength = strength;
   const AdjustOptions adjust = [&](DenoiseOptions& o) {
     o.method = options.method;
     o.normals.solver = options.normals.solver;
     o.vertices.solver = options.vertices.solver;
-    for (const auto& [name, value] : overrides) {
-      const Parameter<DenoiseOptions>* p = find_parameter(denoise_parameters(), name);
-      if (!p) throw InvalidInput("unknown parameter '" + name + "'");
-      p->set(o, value);
-    }
+    for (const auto& [name, value] : overrides) set_denoise_parameter(o, name, value);
   };
   SecondRound second;
   const DenoiseResult r = run_without_gil(progress, [&](const ProgressCallback& cb) {

@@ -92,6 +92,14 @@ void bind_table(py::module_& m, const ParameterTable<Options>& t) {
       "parameters", [&t](const Options& o) { return values(t, o); }, py::arg("options"));
 }
 
+}  // namespace
+
+void set_denoise_parameter(DenoiseOptions& o, const std::string& name, double value) {
+  set(denoise_parameters(), o, name, value);
+}
+
+namespace {
+
 py::list table_binding(const std::string& kind) {
   if (kind == "denoise") {
     std::vector<std::pair<std::string, DenoiseOptions>> d;

@@ -15,9 +15,11 @@
 #include <atomic>
 #include <chrono>
 #include <exception>
+#include <string>
 #include <utility>
 #include <vector>
 
+#include "msmesh/denoise.h"
 #include "msmesh/normal_filter.h"
 #include "msmesh/progress.h"
 #include "msmesh/threads.h"
@@ -103,6 +105,10 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 /// The iteration counts and histories of Algorithm 1 / Algorithm 2 as dict entries.
+/// Sets denoise parameter `name` (either spelling) on `o`, checked as the set_parameter binding
+/// does (bind_parameters.cpp).
+void set_denoise_parameter(DenoiseOptions& o, const std::string& name, double value);
+
 py::dict normal_report(const NormalFilterStats& r);
 void add_vertex_report(py::dict& d, const VertexUpdateStats& r);
 
