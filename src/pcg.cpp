@@ -13,6 +13,7 @@
 #include "msmesh/errors.h"
 #include "parallel.h"
 #include "sparse_build.h"
+#include "wide_rows.h"
 
 namespace msmesh::detail {
 
@@ -394,22 +395,33 @@ template <class Stored>
 template <int K>
 PcgStats BasicBlockPcg<Stored>::solve_permuted(const double* B, double* X, double relative_tolerance,
                                                int max_iterations, const std::string& what) const {
-  return ell_cols_.empty() ? solve_layout<K, false>(B, X, relative_tolerance, max_iterations, what)
-                           : solve_layout<K, true>(B, X, relative_tolerance, max_iterations, what);
+  // Three columns on rows padded to four where the wide loops (wide_rows.h) exist for the
+  // layout: any fixed-width matrix (the N-step's, the polish's) and a compressed double one
+  // (the vertex update's).
+  if constexpr (K == 3) {
+    if (wide_rows()) {
+      if (!ell_cols_.empty()) return solve_layout<3, true, 4>(B, X, relative_tolerance, max_iterations, what);
+      if constexpr (std::is_same_v<Stored, double>)
+        return solve_layout<3, false, 4>(B, X, relative_tolerance, max_iterations, what);
+    }
+  }
+  return ell_cols_.empty() ? solve_layout<K, false, K>(B, X, relative_tolerance, max_iterations, what)
+                           : solve_layout<K, true, K>(B, X, relative_tolerance, max_iterations, what);
 }
 
-// CG on the reordered system, B and X n by K row-major (element (i, c) at K·i + c); Ell: the
+// CG on the reordered system, B and X n by K row-major (element (i, c) at K·i + c), the work
+// vectors n by S (K, or 4 for the wide rows: element (i, c) at S·i + c, the fourth 0); Ell: the
 // matrix in the fixed-width layout.
 // a = (A v)_i: in the fixed-width layout the diagonal, then kEllWidth entries (a row's unused
 // slots hold 0 at its own column); otherwise the compressed row.
 template <class Stored>
-template <int K, bool Ell, class T>
+template <int K, int S, bool Ell, class T>
 inline void BasicBlockPcg<Stored>::row_product(Eigen::Index i, const T* __restrict v, double* a) const {
   if constexpr (Ell) {
-    for (int c = 0; c < K; ++c) a[c] = double(ell_diag_[static_cast<size_t>(i)]) * double(v[K * i + c]);
+    for (int c = 0; c < K; ++c) a[c] = double(ell_diag_[static_cast<size_t>(i)]) * double(v[S * i + c]);
     for (int k = 0; k < kEllWidth; ++k) {
       const double w = ell_vals_[static_cast<size_t>(kEllWidth * i + k)];
-      const T* vj = v + K * static_cast<Eigen::Index>(ell_cols_[static_cast<size_t>(kEllWidth * i + k)]);
+      const T* vj = v + S * static_cast<Eigen::Index>(ell_cols_[static_cast<size_t>(kEllWidth * i + k)]);
       for (int c = 0; c < K; ++c) a[c] += w * double(vj[c]);
     }
   } else {
@@ -420,24 +432,24 @@ inline void BasicBlockPcg<Stored>::row_product(Eigen::Index i, const T* __restri
     const int j1 = outer[i + 1];
     for (int j = outer[i]; j < j1; ++j) {
       const double w = val[j];
-      const T* vj = v + K * static_cast<Eigen::Index>(inner[j]);
+      const T* vj = v + S * static_cast<Eigen::Index>(inner[j]);
       for (int c = 0; c < K; ++c) a[c] += w * double(vj[c]);
     }
   }
 }
 
 template <class Stored>
-template <int K, bool Ell>
+template <int K, bool Ell, int S>
 PcgStats BasicBlockPcg<Stored>::solve_layout(const double* B, double* X, double relative_tolerance, int max_iterations,
                                              const std::string& what) const {
-  if (chebyshev_ && lambda_min_ > 0) return solve_chebyshev<K, Ell>(B, X, relative_tolerance, max_iterations, what);
+  if (chebyshev_ && lambda_min_ > 0) return solve_chebyshev<K, Ell, S>(B, X, relative_tolerance, max_iterations, what);
   using Sums = std::array<double, K>;
   const Eigen::Index n = size();
   const Stored* inv_d = inv_diag_.data();
   // Work space kept between calls (no allocation, no page faults in the iterations).
-  R_.resize(static_cast<size_t>(K * n));
-  P_.resize(static_cast<size_t>(K * n));
-  Q_.resize(static_cast<size_t>(K * n));
+  R_.resize(static_cast<size_t>(S * n));
+  P_.resize(static_cast<size_t>(S * n));
+  Q_.resize(static_cast<size_t>(S * n));
   Stored* Rp = R_.data();
   Stored* Pw = P_.data();
   Stored* Qp = Q_.data();
@@ -448,12 +460,13 @@ PcgStats BasicBlockPcg<Stored>::solve_layout(const double* B, double* X, double 
       [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 3>& s) {
         for (Eigen::Index i = i0; i < i1; ++i) {
           double ax[K];
-          row_product<K, Ell>(i, X, ax);
+          row_product<K, K, Ell>(i, X, ax);
+          for (int c = K; c < S; ++c) Rp[S * i + c] = Pw[S * i + c] = 0;  // the padding
           for (int c = 0; c < K; ++c) {
             const double b = B[K * i + c];
             const Stored r = static_cast<Stored>(b - ax[c]), z = static_cast<Stored>(double(r) * double(inv_d[i]));
-            Rp[K * i + c] = r;
-            Pw[K * i + c] = z;
+            Rp[S * i + c] = r;
+            Pw[S * i + c] = z;
             s[0][c] += b * b;
             s[1][c] += double(r) * double(z);
             s[2][c] += double(r) * double(r);
@@ -477,7 +490,7 @@ PcgStats BasicBlockPcg<Stored>::solve_layout(const double* B, double* X, double 
   auto all_done = [&] { return std::all_of(done.begin(), done.end(), [](bool d) { return d; }); };
   for (int c = 0; c < K; ++c)
     if (done[c])
-      for (Eigen::Index i = 0; i < n; ++i) Pw[K * i + c] = 0;
+      for (Eigen::Index i = 0; i < n; ++i) Pw[S * i + c] = 0;
 
   // The Lanczos coefficients of one column (CG's α and β), while the spectrum is not known.
   const bool learn = chebyshev_ && !(lambda_min_ > 0);
@@ -498,13 +511,19 @@ PcgStats BasicBlockPcg<Stored>::solve_layout(const double* B, double* X, double 
           const Stored* __restrict p = Pw;
           Stored* __restrict q = Qp;
           Sums pq{};
-          for (Eigen::Index i = i0; i < i1; ++i) {
-            double a[K];
-            row_product<K, Ell>(i, p, a);
-            for (int c = 0; c < K; ++c) {
-              const Stored qc = static_cast<Stored>(a[c]);
-              q[K * i + c] = qc;
-              pq[c] += double(p[K * i + c]) * double(qc);
+          if constexpr (S == 4 && Ell) {
+            product_wide(i0, i1, ell_diag_.data(), ell_vals_.data(), ell_cols_.data(), p, q, pq.data());
+          } else if constexpr (S == 4 && std::is_same_v<Stored, double>) {
+            product_wide(i0, i1, A_.outerIndexPtr(), A_.innerIndexPtr(), A_.valuePtr(), p, q, pq.data());
+          } else {
+            for (Eigen::Index i = i0; i < i1; ++i) {
+              double a[K];
+              row_product<K, S, Ell>(i, p, a);
+              for (int c = 0; c < K; ++c) {
+                const Stored qc = static_cast<Stored>(a[c]);
+                q[S * i + c] = qc;
+                pq[c] += double(p[S * i + c]) * double(qc);
+              }
             }
           }
           s[0] = pq;
@@ -521,8 +540,14 @@ PcgStats BasicBlockPcg<Stored>::solve_layout(const double* B, double* X, double 
           const Stored* __restrict q = Qp;
           const Stored* __restrict id = inv_d;
           Sums rzs{}, rrs{};
+          if constexpr (S == 4) {
+            residual_update_wide(i0, i1, r, q, id, alpha.data(), rzs.data(), rrs.data());
+            s[0] = rzs;
+            s[1] = rrs;
+            return;
+          }
           for (Eigen::Index i = i0; i < i1; ++i) {
-            const Eigen::Index b = K * i;
+            const Eigen::Index b = S * i;
             const double di = id[i];
             for (int c = 0; c < K; ++c) {
               const Stored stored = static_cast<Stored>(double(r[b + c]) - alpha[c] * double(q[b + c]));
@@ -560,7 +585,7 @@ PcgStats BasicBlockPcg<Stored>::solve_layout(const double* B, double* X, double 
         double* __restrict x = X;
         const Stored* __restrict p = Pw;
         for (Eigen::Index i = i0; i < i1; ++i)
-          for (int c = 0; c < K; ++c) x[K * i + c] += alpha[c] * double(p[K * i + c]);
+          for (int c = 0; c < K; ++c) x[K * i + c] += alpha[c] * double(p[S * i + c]);
       });
       break;
     }
@@ -573,12 +598,16 @@ PcgStats BasicBlockPcg<Stored>::solve_layout(const double* B, double* X, double 
           double* __restrict x = X;
           Stored* __restrict p = Pw;
           const Stored* __restrict r = Rp;
+          if constexpr (S == 4) {
+            direction_update_wide(i0, i1, x, p, r, inv_d, alpha.data(), keep.data(), beta.data());
+            return;
+          }
           for (Eigen::Index i = i0; i < i1; ++i) {
             const double di = inv_d[i];
             for (int c = 0; c < K; ++c) {
-              const double pc = p[K * i + c];
+              const double pc = p[S * i + c];
               x[K * i + c] += alpha[c] * pc;
-              p[K * i + c] = static_cast<Stored>(keep[c] * (double(r[K * i + c]) * di + beta[c] * pc));
+              p[S * i + c] = static_cast<Stored>(keep[c] * (double(r[S * i + c]) * di + beta[c] * pc));
             }
           }
         },
@@ -699,15 +728,15 @@ void BasicBlockPcg<Stored>::learn_spectrum(const std::vector<double>& alpha, con
 // CG; if it has not converged within twice the sweeps its rate promises (a spectrum wider than
 // estimated), CG takes over from where it got to.
 template <class Stored>
-template <int K, bool Ell>
+template <int K, bool Ell, int S>
 PcgStats BasicBlockPcg<Stored>::solve_chebyshev(const double* B, double* X, double relative_tolerance,
                                                 int max_iterations, const std::string& what) const {
   using Sums = std::array<double, K>;
   const Eigen::Index n = size();
   const Stored* inv_d = inv_diag_.data();
-  R_.resize(static_cast<size_t>(K * n));
-  P_.resize(static_cast<size_t>(K * n));
-  Q_.resize(static_cast<size_t>(K * n));
+  R_.resize(static_cast<size_t>(S * n));
+  P_.resize(static_cast<size_t>(S * n));
+  Q_.resize(static_cast<size_t>(S * n));
   Stored* R0 = R_.data();
   Stored* Y0 = P_.data();  // y_k
   Stored* Y1 = Q_.data();  // y_{k−1}, overwritten by y_{k+1}
@@ -723,12 +752,13 @@ PcgStats BasicBlockPcg<Stored>::solve_chebyshev(const double* B, double* X, doub
       [&](Eigen::Index i0, Eigen::Index i1, std::array<Sums, 2>& s) {
         for (Eigen::Index i = i0; i < i1; ++i) {
           double ax[K];
-          row_product<K, Ell>(i, X, ax);
+          row_product<K, K, Ell>(i, X, ax);
+          for (int c = K; c < S; ++c) R0[S * i + c] = Y0[S * i + c] = 0;  // the padding
           for (int c = 0; c < K; ++c) {
             const double b = B[K * i + c];
             const Stored r = static_cast<Stored>(b - ax[c]);
-            R0[K * i + c] = r;
-            Y0[K * i + c] = static_cast<Stored>(double(r) * double(inv_d[i]) / theta);
+            R0[S * i + c] = r;
+            Y0[S * i + c] = static_cast<Stored>(double(r) * double(inv_d[i]) / theta);
             s[0][c] += b * b;
             s[1][c] += double(r) * double(r);
           }
@@ -753,8 +783,8 @@ PcgStats BasicBlockPcg<Stored>::solve_chebyshev(const double* B, double* X, doub
     if (s0[0][c] == 0)  // b = 0: the solution is 0 (and r₀ and y stay 0)
       for (Eigen::Index i = 0; i < n; ++i) {
         X[K * i + c] = 0;
-        R0[K * i + c] = 0;
-        Y0[K * i + c] = 0;
+        R0[S * i + c] = 0;
+        Y0[S * i + c] = 0;
       }
   }
   if (converged(s0[1])) return stats;
@@ -764,7 +794,8 @@ PcgStats BasicBlockPcg<Stored>::solve_chebyshev(const double* B, double* X, doub
         n,
         [&](Eigen::Index i0, Eigen::Index i1) {
           double* __restrict x = X;
-          for (Eigen::Index i = K * i0; i < K * i1; ++i) x[i] += double(y[i]);
+          for (Eigen::Index i = i0; i < i1; ++i)
+            for (int c = 0; c < K; ++c) x[K * i + c] += double(y[S * i + c]);
         },
         K);
   };
@@ -781,7 +812,7 @@ PcgStats BasicBlockPcg<Stored>::solve_chebyshev(const double* B, double* X, doub
       // what Chebyshev was slow on) for the solves after this one.
       add_correction(Y0);
       lambda_min_ = 0;
-      const PcgStats cg = solve_layout<K, Ell>(B, X, relative_tolerance, max_iterations - it + 1, what);
+      const PcgStats cg = solve_layout<K, Ell, S>(B, X, relative_tolerance, max_iterations - it + 1, what);
       stats.iterations = it - 1 + cg.iterations;
       stats.relative_residual = cg.relative_residual;
       return stats;
@@ -798,12 +829,18 @@ PcgStats BasicBlockPcg<Stored>::solve_chebyshev(const double* B, double* X, doub
             Stored* __restrict y_old = Y1;
             const Stored* __restrict r0 = R0;
             Sums rr{};
+            if constexpr (S == 4 && Ell) {
+              chebyshev_sweep_wide(i0, i1, ell_diag_.data(), ell_vals_.data(), ell_cols_.data(), inv_d, y, y_old, r0,
+                                   c1, c2, decltype(first)::value, rr.data());
+              s[0] = rr;
+              return;
+            }
             for (Eigen::Index i = i0; i < i1; ++i) {
               double a[K];
-              row_product<K, Ell>(i, y, a);
+              row_product<K, S, Ell>(i, y, a);
               const double di = inv_d[i];
               for (int c = 0; c < K; ++c) {
-                const Eigen::Index e = K * i + c;
+                const Eigen::Index e = S * i + c;
                 const double rc = double(r0[e]) - a[c], yc = y[e];
                 const double previous = decltype(first)::value ? 0.0 : double(y_old[e]);
                 y_old[e] = static_cast<Stored>(yc + c1 * (yc - previous) + c2 * di * rc);

@@ -111,13 +111,15 @@ class BasicBlockPcg {
   template <int K>
   PcgStats solve_permuted(const double* B, double* X, double relative_tolerance, int max_iterations,
                           const std::string& what) const;
-  template <int K, bool Ell>
+  // S: the stride of the work vectors' rows, K or, for the wide rows (wide_rows.h), 4.
+  template <int K, bool Ell, int S>
   PcgStats solve_layout(const double* B, double* X, double relative_tolerance, int max_iterations,
                         const std::string& what) const;
-  template <int K, bool Ell>
+  template <int K, bool Ell, int S>
   PcgStats solve_chebyshev(const double* B, double* X, double relative_tolerance, int max_iterations,
                            const std::string& what) const;
-  template <int K, bool Ell, class T>
+  // a = (A v)_i, v with rows of stride S.
+  template <int K, int S, bool Ell, class T>
   void row_product(Eigen::Index i, const T* __restrict v, double* a) const;
   // A product pass's rows as simple rows for the parallel threshold (parallel.h): compressed
   // rows of many entries (the vertex update's ~19) are worth several.

@@ -10,8 +10,14 @@
 #include <string>
 #include <vector>
 
+#include "msmesh/denoise.h"
 #include "msmesh/errors.h"
+#include "msmesh/noise.h"
+#include "msmesh/presets.h"
+#include "msmesh/shapes.h"
 #include "pcg.h"
+#include "test_helpers.h"
+#include "wide_rows.h"
 
 using namespace msmesh;
 
@@ -339,4 +345,89 @@ TEST(InternalPcg, ChebyshevOnGershgorinsIntervalFollowsTheDiagonal) {
   x.setZero();
   EXPECT_LE(diagonal.solve(b, x, 1e-10, 1000, "test").iterations, 2);
   EXPECT_LT((D * x - b).norm(), 2e-10 * b.norm());
+}
+
+namespace {
+
+// Switches the wide rows (wide_rows.h) off for one scope.
+struct ScalarRows {
+  ScalarRows() { detail::set_wide_rows(false); }
+  ~ScalarRows() { detail::set_wide_rows(true); }
+};
+
+// Three solves of the same system from the same start (the first of CG, learning the spectrum
+// when Chebyshev is on; the next ones by Chebyshev): the iterates and sweeps of each.
+template <class Pcg>
+std::vector<std::pair<detail::RowMatrixX3, int>> three_solves(const Pcg& pcg, const detail::RowMatrixX3& B) {
+  std::vector<std::pair<detail::RowMatrixX3, int>> out;
+  detail::RowMatrixX3 X = detail::RowMatrixX3::Zero(B.rows(), 3);
+  for (int k = 0; k < 3; ++k) {
+    detail::RowMatrixX3 Bk = B * (1.0 + 0.5 * k);
+    const int sweeps = pcg.solve(Bk, X, 1e-7, 2000, "test").iterations;
+    out.emplace_back(X, sweeps);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(InternalPcg, WideRowsGiveTheScalarLoopsResultsBitForBit) {
+  // Rows padded to four and four columns per instruction where the processor has AVX: the
+  // same operations in the same order, so the same iterates to the last bit, in both layouts,
+  // both precisions, CG and Chebyshev, on enough rows for several parallel blocks.
+  if (!detail::wide_rows()) GTEST_SKIP() << "no AVX on this processor: only the scalar loops run";
+  for (int neighbours : {3, 4}) {
+    const Eigen::SparseMatrix<double> A = grid_matrix(190, neighbours, 0.3);
+    const Eigen::Index n = A.rows();
+    detail::RowMatrixX3 B(n, 3);
+    for (Eigen::Index i = 0; i < n; ++i) B.row(i) << std::sin(0.1 * i), std::cos(0.07 * i), 1.0;
+    for (bool single : {false, true})
+      for (bool chebyshev : {false, true}) {
+        auto run = [&] {
+          if (single) {
+            detail::SingleBlockPcg pcg(A);
+            if (chebyshev) pcg.use_chebyshev();
+            return three_solves(pcg, B);
+          }
+          detail::BlockPcg pcg(A);
+          if (chebyshev) pcg.use_chebyshev();
+          return three_solves(pcg, B);
+        };
+        const auto wide = run();
+        std::vector<std::pair<detail::RowMatrixX3, int>> scalar;
+        {
+          const ScalarRows off;
+          scalar = run();
+        }
+        for (size_t k = 0; k < wide.size(); ++k) {
+          EXPECT_GT(wide[k].second, 0);
+          EXPECT_EQ(wide[k].second, scalar[k].second) << neighbours << single << chebyshev << k;
+          EXPECT_TRUE(test::bit_identical(Eigen::MatrixXd(wide[k].first), Eigen::MatrixXd(scalar[k].first)))
+              << neighbours << single << chebyshev << k;
+        }
+      }
+  }
+}
+
+TEST(InternalPcg, WideRowsGiveTheSameDenoisedMesh) {
+  // A whole default denoise large enough for the N-step's Chebyshev sweeps, the polish and
+  // the vertex update's CG: the same positions to the last bit with the wide rows off.
+  if (!detail::wide_rows()) GTEST_SKIP() << "no AVX on this processor: only the scalar loops run";
+  const Mesh clean = make_fandisk_like(70);
+  ASSERT_GE(clean.F.rows(), 25000);
+  NoiseOptions no;
+  no.sigma = 0.3;
+  no.seed = 4;
+  const Eigen::MatrixXd V = add_noise(clean.V, clean.F, no);
+  const DenoiseOptions o = resolve_preset("auto", V, clean.F).options;
+  ASSERT_GT(o.normals.polish, 0);
+  const DenoiseResult wide = denoise(V, clean.F, o);
+  DenoiseResult scalar;
+  {
+    const ScalarRows off;
+    scalar = denoise(V, clean.F, o);
+  }
+  EXPECT_FALSE(wide.normal_report.n_solver_iterations.empty());
+  EXPECT_EQ(wide.normal_report.n_solver_iterations, scalar.normal_report.n_solver_iterations);
+  EXPECT_TRUE(test::bit_identical(wide.V, scalar.V));
 }
