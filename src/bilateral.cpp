@@ -14,6 +14,7 @@
 #include "msmesh/parameters.h"
 #include "normalize.h"
 #include "parallel.h"
+#include "wide_rows.h"
 
 namespace msmesh {
 
@@ -213,12 +214,23 @@ Eigen::MatrixXd detail::bilateral_normals_by_pairs(const Eigen::MatrixXd& V, con
         for (int i = start[f]; i < start[f + 1]; ++i) weight[i] = A(nbr[i]) * spatial[pair_of[i]];
       },
       12);
-  Rows N = face_normals(Vn, F), Nn(nf, 3);
+  // The normals as rows of four (the fourth 0), for the wide rows (wide_rows.h) of the sums.
+  std::vector<double> N(static_cast<std::size_t>(4 * nf)), Nn(static_cast<std::size_t>(4 * nf));
+  {
+    const Rows N0 = face_normals(Vn, F);
+    detail::parallel_for(nf, [&](Eigen::Index f) {
+      for (int c = 0; c < 3; ++c) N[static_cast<std::size_t>(4 * f + c)] = N0(f, c);
+      N[static_cast<std::size_t>(4 * f + 3)] = Nn[static_cast<std::size_t>(4 * f + 3)] = 0;
+    });
+  }
+  const bool wide = detail::wide_rows();
+  constexpr Eigen::Index kFaces = 256;  // faces per block of sums
+  const Eigen::Index face_blocks = (nf + kFaces - 1) / kFaces;
   for (int it = 0; it < passes; ++it) {
     detail::parallel_for_blocks(np4, [&](Eigen::Index p0, Eigen::Index p1) {
       for (Eigen::Index p = p0; p < std::min(p1, np); ++p) {
-        const double* a = N.data() + 3 * first[p];
-        const double* b = N.data() + 3 * second[p];
+        const double* a = N.data() + 4 * first[p];
+        const double* b = N.data() + 4 * second[p];
         const double n0 = a[0] - b[0], n1 = a[1] - b[1], n2 = a[2] - b[2];
         range_f[p] = static_cast<float>(-(n0 * n0 + n1 * n1 + n2 * n2) * ir2);
       }
@@ -226,21 +238,41 @@ Eigen::MatrixXd detail::bilateral_normals_by_pairs(const Eigen::MatrixXd& V, con
       r = r.exp();
     });
 #pragma omp parallel for schedule(static) if (nf >= 8192)
-    for (Eigen::Index f = 0; f < nf; ++f) {
-      const double* nf3 = N.data() + 3 * f;
-      double s0 = A(f) * nf3[0], s1 = A(f) * nf3[1], s2 = A(f) * nf3[2];
-      for (int i = start[f]; i < start[f + 1]; ++i) {
-        const double* ng = N.data() + 3 * nbr[i];
-        const double w = weight[i] * double(range_f[pair_of[i]]);
-        s0 += w * ng[0];
-        s1 += w * ng[1];
-        s2 += w * ng[2];
+    for (Eigen::Index b = 0; b < face_blocks; ++b) {
+      const Eigen::Index f0 = b * kFaces, f1 = std::min(nf, f0 + kFaces);
+      double sums[4 * kFaces];
+      if (wide) {
+        detail::weighted_sums_wide(f0, f1, start.data(), nbr.data(), A.data(), weight.data(), range_f.data(),
+                                   pair_of.data(), N.data(), sums);
+      } else {
+        for (Eigen::Index f = f0; f < f1; ++f) {
+          const double* nf3 = N.data() + 4 * f;
+          double s0 = A(f) * nf3[0], s1 = A(f) * nf3[1], s2 = A(f) * nf3[2];
+          for (int i = start[f]; i < start[f + 1]; ++i) {
+            const double* ng = N.data() + 4 * nbr[i];
+            const double w = weight[i] * double(range_f[pair_of[i]]);
+            s0 += w * ng[0];
+            s1 += w * ng[1];
+            s2 += w * ng[2];
+          }
+          double* s = sums + 4 * (f - f0);
+          s[0] = s0;
+          s[1] = s1;
+          s[2] = s2;
+        }
       }
-      store_unit(s0, s1, s2, nf3, Nn.data() + 3 * f);
+      for (Eigen::Index f = f0; f < f1; ++f) {
+        const double* s = sums + 4 * (f - f0);
+        store_unit(s[0], s[1], s[2], N.data() + 4 * f, Nn.data() + 4 * f);
+      }
     }
     N.swap(Nn);
   }
-  return Eigen::MatrixXd(N);
+  Eigen::MatrixXd out(nf, 3);
+  detail::parallel_for(nf, [&](Eigen::Index f) {
+    for (int c = 0; c < 3; ++c) out(f, c) = N[static_cast<std::size_t>(4 * f + c)];
+  });
+  return out;
 }
 
 Eigen::MatrixXd classic_vertex_update(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const Eigen::MatrixXd& N,

@@ -57,8 +57,12 @@ MSMESH_AVX inline void add_lanes(__m256d v, double* out) {
   _mm256_store_pd(s, v);
   for (int c = 0; c < 3; ++c) out[c] += s[c];
 }
-// The first three lanes of a (lanes of a row of three doubles, the caller's x).
-MSMESH_AVX inline __m256i three_lanes() { return _mm256_set_epi64x(0, -1, -1, -1); }
+// x[0..2] += the first three lanes of v (a row of three doubles, the caller's x), by a pair and
+// a single (AVX's masked stores are slow on some processors).
+MSMESH_AVX inline void add_to_three(double* x, __m256d v) {
+  _mm_storeu_pd(x, _mm_add_pd(_mm_loadu_pd(x), _mm256_castpd256_pd128(v)));
+  _mm_store_sd(x + 2, _mm_add_sd(_mm_load_sd(x + 2), _mm256_extractf128_pd(v, 1)));
+}
 
 // diag y_i + Σ_k vals_k y_cols_k, in the scalar loop's order.
 template <class T>
@@ -135,11 +139,21 @@ MSMESH_AVX void direction_update_avx(Eigen::Index i0, Eigen::Index i1, double* x
   const __m256d va = _mm256_set_pd(0, alpha[2], alpha[1], alpha[0]);
   const __m256d vk = _mm256_set_pd(0, keep[2], keep[1], keep[0]);
   const __m256d vb = _mm256_set_pd(0, beta[2], beta[1], beta[0]);
-  const __m256i xyz = three_lanes();
   for (Eigen::Index i = i0; i < i1; ++i) {
     const __m256d pi = load4(p + 4 * i);
-    _mm256_maskstore_pd(x + 3 * i, xyz, add(_mm256_maskload_pd(x + 3 * i, xyz), mul(va, pi)));
+    add_to_three(x + 3 * i, mul(va, pi));
     store4(p + 4 * i, mul(vk, add(mul(load4(r + 4 * i), splat(double(inv_d[i]))), mul(vb, pi))));
+  }
+}
+
+MSMESH_AVX void weighted_sums_avx(Eigen::Index f0, Eigen::Index f1, const int* start, const int* nbr,
+                                  const double* area, const double* weight, const float* range, const int* pair_of,
+                                  const double* n, double* sums) {
+  for (Eigen::Index f = f0; f < f1; ++f) {
+    __m256d s = mul(splat(area[f]), load4(n + 4 * f));
+    for (int i = start[f]; i < start[f + 1]; ++i)
+      s = add(s, mul(splat(weight[i] * double(range[pair_of[i]])), load4(n + 4 * static_cast<Eigen::Index>(nbr[i]))));
+    store4(sums + 4 * (f - f0), s);
   }
 }
 
@@ -177,6 +191,11 @@ void direction_update_wide(Eigen::Index i0, Eigen::Index i1, double* x, T* p, co
   direction_update_avx(i0, i1, x, p, r, inv_d, alpha, keep, beta);
 }
 
+void weighted_sums_wide(Eigen::Index f0, Eigen::Index f1, const int* start, const int* nbr, const double* area,
+                        const double* weight, const float* range, const int* pair_of, const double* n, double* sums) {
+  weighted_sums_avx(f0, f1, start, nbr, area, weight, range, pair_of, n, sums);
+}
+
 #else  // no wide rows on this processor family: wide_rows() is false, so none of these is called
 
 template <class T>
@@ -193,6 +212,10 @@ void product_wide(Eigen::Index, Eigen::Index, const T*, const T*, const int*, co
 }
 template <class T>
 void residual_update_wide(Eigen::Index, Eigen::Index, T*, const T*, const T*, const double*, double*, double*) {
+  std::abort();
+}
+void weighted_sums_wide(Eigen::Index, Eigen::Index, const int*, const int*, const double*, const double*, const float*,
+                        const int*, const double*, double*) {
   std::abort();
 }
 template <class T>

@@ -1,5 +1,6 @@
-// Internal: the hot loops of the three-column solves (pcg.cpp) on rows padded to four
-// entries, four columns per 256-bit instruction where the processor has AVX.
+// Internal: hot loops over rows of three numbers padded to four, four per 256-bit instruction
+// where the processor has AVX: the three-column solves' (pcg.cpp) and the shape rule's
+// bilateral sums (bilateral.cpp).
 //
 // Why: the N-step's Chebyshev sweeps and the vertex update's CG products are bound by the
 // instructions per row, not by memory (a row of the N-step costs the same 6–7 ns on one thread
@@ -53,5 +54,12 @@ void residual_update_wide(Eigen::Index i0, Eigen::Index i1, T* r, const T* q, co
 template <class T>
 void direction_update_wide(Eigen::Index i0, Eigen::Index i1, double* x, T* p, const T* r, const T* inv_d,
                            const double* alpha, const double* keep, const double* beta);
+
+/// The shape rule's bilateral sums (bilateral.cpp, bilateral_normals_by_pairs) over faces
+/// [f0, f1): s_f = a_f n_f + Σ_i weight_i · range[pair_of_i] · n_{nbr_i} for the entries i of f's
+/// neighbour list (start/nbr), n in rows of four doubles; s_f written as the row f − f0 of four
+/// into sums (the fourth entry unspecified).
+void weighted_sums_wide(Eigen::Index f0, Eigen::Index f1, const int* start, const int* nbr, const double* area,
+                        const double* weight, const float* range, const int* pair_of, const double* n, double* sums);
 
 }  // namespace msmesh::detail

@@ -9,6 +9,7 @@
 #include "msmesh/shapes.h"
 #include "msmesh/threads.h"
 #include "test_helpers.h"
+#include "wide_rows.h"
 
 using namespace msmesh;
 
@@ -50,4 +51,17 @@ TEST(BilateralPairs, SameBitsAtEveryThreadCount) {
   }
   set_threads(before);
   expect_same_normals(cube, 4);
+}
+
+TEST(BilateralPairs, WideRowsGiveTheScalarLoopsBits) {
+  // The sums of each pass four entries at a time where the processor has AVX (wide_rows.h):
+  // the same normals to the last bit as the scalar loop, on a mesh of several blocks.
+  if (!detail::wide_rows()) GTEST_SKIP() << "no AVX on this processor: only the scalar loop runs";
+  const Mesh m = test::noisy(make_shape("fandisk", 40), 0.3);
+  ASSERT_GT(m.F.rows(), 8192);  // the passes' parallel loop
+  const Eigen::MatrixXd wide = detail::bilateral_normals_by_pairs(m.V, m.F, 15, 0.35);
+  detail::set_wide_rows(false);
+  const Eigen::MatrixXd scalar = detail::bilateral_normals_by_pairs(m.V, m.F, 15, 0.35);
+  detail::set_wide_rows(true);
+  EXPECT_TRUE(test::bit_identical(wide, scalar));
 }
