@@ -413,7 +413,7 @@ TEST(InternalPcg, WideRowsGiveTheSameDenoisedMesh) {
   // A whole default denoise large enough for the N-step's Chebyshev sweeps, the polish and
   // the vertex update's CG: the same positions to the last bit with the wide rows off.
   if (!detail::wide_rows()) GTEST_SKIP() << "no AVX on this processor: only the scalar loops run";
-  const Mesh clean = make_fandisk_like(70);
+  const Mesh clean = make_fandisk_like(50);
   ASSERT_GE(clean.F.rows(), 25000);
   NoiseOptions no;
   no.sigma = 0.3;
