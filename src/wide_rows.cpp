@@ -18,7 +18,11 @@ std::atomic<bool> switched_off{false};
 
 bool processor_has_avx() {
 #if MSMESH_WIDE_ROWS
-  static const bool has = __builtin_cpu_supports("avx");
+  // (libgcc's test includes the operating system's support of the AVX registers.)
+  static const bool has = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx") != 0;
+  }();
   return has;
 #else
   return false;
