@@ -40,22 +40,24 @@ Eigen::MatrixXd face_normals(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F)
 
 Eigen::MatrixXd face_barycenters(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   Eigen::MatrixXd B(F.rows(), 3);
-  for (Eigen::Index f = 0; f < F.rows(); ++f) B.row(f) = (V.row(F(f, 0)) + V.row(F(f, 1)) + V.row(F(f, 2))) / 3.0;
+  detail::parallel_for(F.rows(),
+                       [&](Eigen::Index f) { B.row(f) = (V.row(F(f, 0)) + V.row(F(f, 1)) + V.row(F(f, 2))) / 3.0; });
   return B;
 }
 
 Eigen::VectorXd edge_lengths(const Eigen::MatrixXd& V, const Topology& topo) {
   Eigen::VectorXd l(topo.num_edges());
-  for (Eigen::Index e = 0; e < topo.num_edges(); ++e) l(e) = (V.row(topo.edges(e, 0)) - V.row(topo.edges(e, 1))).norm();
+  detail::parallel_for(topo.num_edges(),
+                       [&](Eigen::Index e) { l(e) = (V.row(topo.edges(e, 0)) - V.row(topo.edges(e, 1))).norm(); });
   return l;
 }
 
 Eigen::MatrixXd corner_line_lengths(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
   Eigen::MatrixXd L(F.rows(), 3);
-  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+  detail::parallel_for(F.rows(), [&](Eigen::Index f) {
     const Eigen::RowVector3d b = (V.row(F(f, 0)) + V.row(F(f, 1)) + V.row(F(f, 2))) / 3.0;
     for (int k = 0; k < 3; ++k) L(f, k) = (V.row(F(f, k)) - b).norm();
-  }
+  });
   return L;
 }
 

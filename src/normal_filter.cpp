@@ -242,7 +242,8 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
     // Diagonally dominant by a factor ~1/(4ε²): Chebyshev on Gershgorin's interval, one pass a sweep.
     v_system_->use_chebyshev();
   }
-  v_rhs_ = len_.cwiseProduct(beta_e_) * (o.beta / (2 * o.epsilon));
+  v_rhs_.resize(ne_);
+  detail::parallel_for(ne_, [&](Eigen::Index e) { v_rhs_(e) = len_(e) * beta_e_(e) * (o.beta / (2 * o.epsilon)); });
   v_rhs_norm_ = v_rhs_.norm();
   v_diag_.resize(ne_);
   if (!o.record_energy) {
@@ -254,17 +255,26 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
     edge_beta_ = Eigen::VectorXd();
   }
 
-  // The iterates, row-major (one row per face or edge) and allocated once.
-  N_ = N0r_;
+  // The iterates, row-major (one row per face or edge) and allocated once. Filled on the
+  // library's threads: the first touch of each fresh page costs its zeroing in the kernel
+  // (~1.3 GB here at 5M faces, 3 s on one thread; docs/performance.md, "sixteenth round").
+  N_.resize(nf_, 3);
+  detail::parallel_for(nf_, [&](Eigen::Index f) { N_.row(f) = N0r_.row(f); });
   N_prev_.resize(nf_, 3);
   N_next_.resize(nf_, 3);
   rhs_.resize(nf_, 3);
   // q = r p + λ per edge, what the N-step right-hand side needs of p and λ (p itself is
   // used only in the pass over the edges that makes it).
-  q_ = Rows::Zero(ne_, 3);
-  lambda_ = Rows::Zero(ne_, 3);
-  v_ = Eigen::VectorXd::Constant(ne_, o.v_initial);
-  w_ = Eigen::VectorXd::Ones(ne_);  // w⁰ = 1
+  q_.resize(ne_, 3);
+  lambda_.resize(ne_, 3);
+  v_.resize(ne_);
+  w_.resize(ne_);
+  detail::parallel_for(ne_, [&](Eigen::Index e) {
+    q_.row(e).setZero();
+    lambda_.row(e).setZero();
+    v_(e) = o.v_initial;
+    w_(e) = 1;  // w⁰ = 1
+  });
 }
 
 // N-step matrix (eq. 20 in matrix form, DESIGN.md step 1): 2αS + r Gᵀ L G; constant. Also the
@@ -389,7 +399,7 @@ void NormalFilterRun::renumber() {
 Eigen::VectorXd NormalFilterRun::edges_in_input_order(const Eigen::VectorXd& x) const {
   if (edge_order_.empty()) return x;
   Eigen::VectorXd out(x.size());
-  for (Eigen::Index i = 0; i < x.size(); ++i) out(edge_order_[static_cast<size_t>(i)]) = x(i);
+  detail::parallel_for(x.size(), [&](Eigen::Index i) { out(edge_order_[static_cast<size_t>(i)]) = x(i); });
   return out;
 }
 
@@ -397,7 +407,7 @@ Eigen::VectorXd NormalFilterRun::edges_in_input_order(const Eigen::VectorXd& x) 
 Eigen::MatrixXd NormalFilterRun::in_input_order(const Rows& M) const {
   if (order_.empty()) return Eigen::MatrixXd(M);
   Eigen::MatrixXd out(M.rows(), 3);
-  for (Eigen::Index i = 0; i < M.rows(); ++i) out.row(order_[static_cast<size_t>(i)]) = M.row(i);
+  detail::parallel_for(M.rows(), [&](Eigen::Index i) { out.row(order_[static_cast<size_t>(i)]) = M.row(i); });
   return out;
 }
 

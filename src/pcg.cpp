@@ -659,7 +659,7 @@ void BasicBlockPcg<Stored>::use_chebyshev(bool gershgorin_lower) {
   // The off-diagonal row sums Σ_{j≠i} |a_ij| of the matrix as stored (they stay when
   // set_diagonal changes the diagonal).
   const Eigen::Index n = size();
-  off_sums_.assign(static_cast<size_t>(n), 0);
+  off_sums_.resize(static_cast<size_t>(n));  // every entry set below
   // radius = max_i Σ_{j≠i} |a_ij| / a_ii (set_spectrum), per block in parallel.
   std::vector<double> block_radius(static_cast<size_t>((n + kBlock - 1) / kBlock), 0.0);
   parallel_for_blocks(n, [&](Eigen::Index i0, Eigen::Index i1) {

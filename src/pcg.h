@@ -30,6 +30,8 @@
 #include <string>
 #include <vector>
 
+#include "default_init_allocator.h"
+
 namespace msmesh::detail {
 
 using RowSparse = Eigen::SparseMatrix<double, Eigen::RowMajor, int>;
@@ -144,14 +146,14 @@ class BasicBlockPcg {
   // then runs without a loop of unknown length per row: 1.4x faster than the compressed rows
   // in single precision, 1.15x in double (docs/performance.md); A_ is emptied.
   static constexpr int kEllWidth = 3;
-  std::vector<int> ell_cols_;
-  std::vector<Stored> ell_vals_, ell_diag_;
+  UninitializedVector<int> ell_cols_;  // (every entry written in parallel)
+  UninitializedVector<Stored> ell_vals_, ell_diag_;
   Eigen::Matrix<Stored, Eigen::Dynamic, 1> inv_diag_;
   // Chebyshev iteration (use_chebyshev): the interval of D⁻¹A's spectrum; λ_min_ 0 until
   // learnt from a CG solve of at least kLanczosSweeps sweeps.
   static constexpr int kLanczosSweeps = 8;
   static constexpr double kGershgorinKappa = 1.1;
-  std::vector<float> off_sums_;  // Σ_{j≠i} |a_ij| per row (use_chebyshev)
+  UninitializedVector<float> off_sums_;  // Σ_{j≠i} |a_ij| per row (use_chebyshev)
   bool chebyshev_ = false;
   bool gershgorin_lower_ = false;  // use_chebyshev's argument
   double lambda_max_ = 0;
@@ -159,8 +161,10 @@ class BasicBlockPcg {
   Eigen::Index bad_row_ = -1;  // a row (original order) whose diagonal is not positive, or -1
   double bad_value_ = 0;
   // Work space, n by K row-major (not thread-safe: one solve at a time).
-  mutable std::vector<Stored> R_, P_, Q_;
-  mutable std::vector<double> Bp_, Xp_;
+  // Written in full by each solve's first passes, on the library's threads
+  // (default_init_allocator.h: no serial zeroing of fresh pages).
+  mutable UninitializedVector<Stored> R_, P_, Q_;
+  mutable UninitializedVector<double> Bp_, Xp_;
 };
 
 using BlockPcg = BasicBlockPcg<double>;
