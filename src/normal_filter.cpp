@@ -57,7 +57,11 @@ double energy_normalised(const Operators& ops, const Eigen::MatrixXd& N, const E
 }
 
 Eigen::VectorXd ones_or(const Eigen::VectorXd& w, Eigen::Index n, const char* what) {
-  if (w.size() == 0) return Eigen::VectorXd::Ones(n);
+  if (w.size() == 0) {
+    Eigen::VectorXd ones(n);  // first touched on the library's threads
+    detail::parallel_for(n, [&](Eigen::Index i) { ones(i) = 1; });
+    return ones;
+  }
   if (w.size() != n) {
     std::ostringstream os;
     os << "normal filtering: " << what << " has " << w.size() << " entries, expected " << n;
@@ -215,9 +219,13 @@ NormalFilterRun::NormalFilterRun(const PreparedMesh& mesh, const NormalFilterOpt
   // Zero-area faces would make the N-step singular where they have no interior edge; give
   // them a tiny positive weight instead (their normals then follow their neighbours).
   const double area_floor = 1e-12 * std::max(1e-300, ops_.face_areas.mean());
-  fid_weight_ = (2.0 * o.alpha) * ops_.face_areas.cwiseMax(area_floor).cwiseProduct(face_alpha_).cwiseMax(area_floor);
+  fid_weight_.resize(nf_);
+  detail::parallel_for(nf_, [&](Eigen::Index f) {
+    fid_weight_(f) = (2.0 * o.alpha) * std::max(std::max(ops_.face_areas(f), area_floor) * face_alpha_(f), area_floor);
+  });
   assemble_n_step(mesh);
-  N0r_ = detail::to_rows(N0_);
+  N0r_.resize(nf_, 3);
+  detail::parallel_for(nf_, [&](Eigen::Index f) { N0r_.row(f) = N0_.row(f); });
   if (!o.record_energy) N0_ = Eigen::MatrixXd();  // only the energy reads the column-major copy
   renumber();
 
@@ -320,7 +328,7 @@ void NormalFilterRun::assemble_n_step(const PreparedMesh& mesh) {
   // edge's first face, −1 for the second, 0 when the edge carries no gradient), so the
   // right-hand side is assembled face by face without a scatter.
   gt_weight_.resize(nf_, 3);
-  for (Eigen::Index f = 0; f < nf_; ++f)
+  detail::parallel_for(nf_, [&](Eigen::Index f) {
     for (int k = 0; k < 3; ++k) {
       const int e = topo_.face_edges(f, k);
       double sgn = 0;
@@ -328,6 +336,7 @@ void NormalFilterRun::assemble_n_step(const PreparedMesh& mesh) {
         sgn = topo_.edge_faces(e, 0) == f ? 1.0 : (topo_.edge_faces(e, 1) == f ? -1.0 : 0.0);
       gt_weight_(f, k) = sgn * ops_.edge_lengths(e);
     }
+  });
 }
 
 // Puts the per-face arrays into the N-step solver's order (order_), with the face numbers of
