@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "anderson.h"
+#include "default_init_allocator.h"
 #include "msmesh/errors.h"
 #include "msmesh/geometry.h"
 #include "msmesh/operators.h"
@@ -37,7 +38,8 @@ int opposite_vertex(const Eigen::MatrixXi& F, const Topology& t, int f, Eigen::I
 
 // Corners of each vertex, (f, k) as 3f + k: those of vertex i are corners[start[i] .. start[i+1]).
 struct VertexCorners {
-  std::vector<int> start, corners;
+  std::vector<int> start;
+  detail::UninitializedVector<int> corners;  // (written in full by vertex_corners)
 };
 
 VertexCorners vertex_corners(const Eigen::MatrixXi& F, Eigen::Index nv) {
@@ -58,9 +60,10 @@ VertexCorners vertex_corners(const Eigen::MatrixXi& F, Eigen::Index nv) {
 // The four vertices (+,+,−,−) of each interior edge's H row with its v_e, and each vertex's
 // roles in them (4h + r, grouped by vertex like VertexCorners).
 struct EdgeQuads {
-  std::vector<std::array<int, 4>> quad;
-  std::vector<double> quad_v;
-  std::vector<int> role_start, roles;
+  detail::UninitializedVector<std::array<int, 4>> quad;  // (written in full by edge_quads)
+  detail::UninitializedVector<double> quad_v;
+  std::vector<int> role_start;
+  detail::UninitializedVector<int> roles;
   std::vector<Eigen::RowVector3d> quad_normal;  // unit mean target normal (a fairness along the normals)
 };
 
@@ -71,20 +74,37 @@ EdgeQuads edge_quads(const Eigen::MatrixXi& F, const Topology& topo, const std::
   EdgeQuads q;
   q.role_start.assign(static_cast<size_t>(nv) + 1, 0);
   auto renumbered = [&](int i) { return vertex.empty() ? i : vertex[static_cast<size_t>(i)]; };
-  for (Eigen::Index e = 0; e < topo.num_edges(); ++e) {
-    if (!topo.edge_is_interior[e]) continue;
-    q.quad.push_back({renumbered(topo.edges(e, 0)), renumbered(topo.edges(e, 1)),
-                      opposite_vertex(F, topo, topo.edge_faces(e, 0), e),
-                      opposite_vertex(F, topo, topo.edge_faces(e, 1), e)});
-    q.quad_v.push_back(v(e));
-    if (N.size()) {
-      const Eigen::RowVector3d n = N.row(topo.edge_faces(e, 0)) + N.row(topo.edge_faces(e, 1));
-      const double len = n.norm();
-      // Opposite normals (a fold), or two dropped targets (denoise.cpp, unreachable targets), have
-      // no mean: the whole term acts there, as the paper's.
-      q.quad_normal.push_back(len > 1e-6 ? Eigen::RowVector3d(n / len) : Eigen::RowVector3d::Zero());
+  // The interior edges in edge order: counted per block, then each block's quads made in
+  // parallel at its offset.
+  const Eigen::Index ne = topo.num_edges(), blocks = (ne + detail::kBlock - 1) / detail::kBlock;
+  std::vector<Eigen::Index> offset(static_cast<size_t>(blocks) + 1, 0);
+  detail::parallel_for_blocks(ne, [&](Eigen::Index e0, Eigen::Index e1) {
+    Eigen::Index count = 0;
+    for (Eigen::Index e = e0; e < e1; ++e) count += topo.edge_is_interior[e] ? 1 : 0;
+    offset[static_cast<size_t>(e0 / detail::kBlock) + 1] = count;
+  });
+  for (size_t b = 0; b < static_cast<size_t>(blocks); ++b) offset[b + 1] += offset[b];
+  q.quad.resize(static_cast<size_t>(offset.back()));
+  q.quad_v.resize(q.quad.size());
+  if (N.size()) q.quad_normal.resize(q.quad.size());
+  detail::parallel_for_blocks(ne, [&](Eigen::Index e0, Eigen::Index e1) {
+    size_t h = static_cast<size_t>(offset[static_cast<size_t>(e0 / detail::kBlock)]);
+    for (Eigen::Index e = e0; e < e1; ++e) {
+      if (!topo.edge_is_interior[e]) continue;
+      q.quad[h] = {renumbered(topo.edges(e, 0)), renumbered(topo.edges(e, 1)),
+                   opposite_vertex(F, topo, topo.edge_faces(e, 0), e),
+                   opposite_vertex(F, topo, topo.edge_faces(e, 1), e)};
+      q.quad_v[h] = v(e);
+      if (N.size()) {
+        const Eigen::RowVector3d n = N.row(topo.edge_faces(e, 0)) + N.row(topo.edge_faces(e, 1));
+        const double len = n.norm();
+        // Opposite normals (a fold), or two dropped targets (denoise.cpp, unreachable targets),
+        // have no mean: the whole term acts there, as the paper's.
+        q.quad_normal[h] = len > 1e-6 ? Eigen::RowVector3d(n / len) : Eigen::RowVector3d::Zero();
+      }
+      ++h;
     }
-  }
+  });
   for (const auto& h : q.quad)
     for (int r = 0; r < 4; ++r) ++q.role_start[static_cast<size_t>(h[r]) + 1];
   for (size_t i = 0; i < static_cast<size_t>(nv); ++i) q.role_start[i + 1] += q.role_start[i];
