@@ -12,7 +12,9 @@
 // pass over the rows per sweep instead of three (docs/performance.md, "Issue 20, sixth round").
 //
 // Deterministic whatever the thread count: the matrix–vector products are row-parallel and
-// every reduction sums fixed blocks of rows in a fixed order.
+// every reduction sums fixed blocks of rows in a fixed order. And whatever the processor: where
+// it has AVX, three-column solves keep their work vectors in rows of four and run the hot loops
+// four columns per instruction (wide_rows.h), the same operations in the same order.
 //
 // Storage: BlockPcg keeps the matrix and its work vectors in double precision;
 // SingleBlockPcg keeps the matrix values, the preconditioner and the work vectors r, p, q in
