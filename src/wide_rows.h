@@ -3,7 +3,7 @@
 // bilateral sums (bilateral.cpp).
 //
 // Why: the N-step's Chebyshev sweeps and the vertex update's CG products are bound by the
-// instructions per row, not by memory (a row of the N-step costs the same 6–7 ns on one thread
+// instructions per row, not by memory (a row of the N-step costs 7–8 ns on one thread
 // whether the matrix fits the L2 cache or not, docs/performance.md): the scalar loops spend
 // three loads, conversions, multiplications and additions per neighbour where one of each
 // does. The build targets plain x86-64, so the AVX loops are compiled for that instruction set
@@ -20,8 +20,8 @@ namespace msmesh::detail {
 /// True when the wide loops below run: the processor has AVX and set_wide_rows has not
 /// switched them off.
 bool wide_rows();
-/// Tests: off, the solves take the scalar loops on the same padded rows (on: wherever the
-/// processor allows).
+/// Tests: off, every caller takes its scalar loops (the solves on rows of three); on, the wide
+/// loops run wherever the processor allows.
 void set_wide_rows(bool on);
 
 /// One Chebyshev sweep (pcg.cpp, solve_chebyshev) over rows [i0, i1) of a fixed-width matrix
