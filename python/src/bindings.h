@@ -104,11 +104,11 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// The iteration counts and histories of Algorithm 1 / Algorithm 2 as dict entries.
 /// Sets denoise parameter `name` (either spelling) on `o`, checked as the set_parameter binding
 /// does (bind_parameters.cpp).
 void set_denoise_parameter(DenoiseOptions& o, const std::string& name, double value);
 
+/// The iteration counts and histories of Algorithm 1 / Algorithm 2 as dict entries.
 py::dict normal_report(const NormalFilterStats& r);
 void add_vertex_report(py::dict& d, const VertexUpdateStats& r);
 
